@@ -1,0 +1,54 @@
+// Every numeric bound of the rasterizer in one place, with the derivation that makes the integer arithmetic
+// exact. Setup (setup.cpp) and tile execution (tile_raster.h) rely on these; the static_asserts below fail the
+// build if a constant is changed in a way the arithmetic no longer fits.
+#pragma once
+#include <cstdint>
+#include <limits>
+
+namespace raster {
+
+// Sub-pixel precision (CONVENTIONS): window positions are snapped to 1/256 pixel.
+inline constexpr int kSubpixelBits = 8;
+inline constexpr int32_t kSubpixelScale = 1 << kSubpixelBits;
+
+// Largest render target side. 16384 = 2^14 pixels; a d32f target of that size is 1 GiB.
+inline constexpr int kMaxTargetSize = 16384;
+
+// Guard band: after clipping, every window-space x and y lies within [-kGuardBand, kGuardBand] pixels. The
+// clipper cuts against kGuardBandClip (a little inside), so float rounding of clipped vertices cannot leave it.
+inline constexpr int kGuardBand = 1 << 15;  // 32768 px = 2^23 sub-pixel units
+inline constexpr float kGuardBandClip = 32000.0f;
+
+// Tiles and blocks. A tile is the unit of binning and of work for one thread; a block is the unit of the
+// hierarchical accept/reject test and of SIMD work (one 8-wide row of pixels per vector).
+inline constexpr int kTileSizeLog2 = 6;
+inline constexpr int kTileSize = 1 << kTileSizeLog2;  // 64 × 64 pixels
+inline constexpr int kBlockSizeLog2 = 3;
+inline constexpr int kBlockSize = 1 << kBlockSizeLog2;  // 8 × 8 pixels
+
+// ---- Derivation of the fixed-point ranges -------------------------------------------------------------------
+// Snapped coordinates X, Y (sub-pixel units) satisfy |X|, |Y| <= 2^23 (guard band).
+inline constexpr int64_t kMaxCoord = int64_t(kGuardBand) << kSubpixelBits;  // 2^23
+// Edge coefficients A = Y_a - Y_b and B = X_b - X_a: |A|, |B| <= 2^24, so they are stored as int32.
+inline constexpr int64_t kMaxEdgeCoef = 2 * kMaxCoord;  // 2^24
+static_assert(kMaxEdgeCoef <= std::numeric_limits<int32_t>::max());
+// The edge function at a sample S, E(S) = A·(S.x − X_a) + B·(S.y − Y_a), is a sum of two products of values
+// bounded by 2^24 and 2^24 + 2^22 (sample positions lie within the target, inside the guard band):
+// |E| < 2^50, computed in int64.
+static_assert(2.0 * double(kMaxEdgeCoef) * double(2 * kMaxCoord + (int64_t(kMaxTargetSize) << kSubpixelBits)) <
+              double(std::numeric_limits<int64_t>::max()));
+// Samples sit at pixel centres, S = 256·(i, j) + 128, so E(i, j) = 256·(A·i + B·j) + C. The inside test
+// E >= 0 (after the tie-rule bias) is then exactly  A·i + B·j >= T  with T = ceil(−C / 256), |T| < 2^43.
+// Within one 8 × 8 block starting at (bi, bj), F(i, j) = A·i + B·j − T = F0 + A·di + B·dj with 0 <= di, dj < 8.
+// The offset part is bounded by 2 · 7 · 2^24 < 2^28. A block is rasterized per pixel only when the edge
+// crosses it, i.e. when F0 + min offset < 0 <= F0 + max offset, so then |F0| < 2^28 and every per-pixel value
+// satisfies |F| < 2^29: per-pixel edge arithmetic is int32, eight lanes to a vector.
+inline constexpr int64_t kMaxBlockOffset = 2 * (kBlockSize - 1) * kMaxEdgeCoef;
+static_assert(2 * kMaxBlockOffset < (int64_t(1) << 31), "per-pixel edge values must fit int32");
+// The viewport origin and size are bounded so that pixel indices and tile counts fit comfortably.
+static_assert(kMaxTargetSize <= kGuardBand / 2);
+static_assert(kMaxTargetSize % kTileSize == 0 && kTileSize % kBlockSize == 0);
+// Bounding boxes are stored as int32 pixel indices; tile indices as uint16.
+static_assert(kMaxTargetSize / kTileSize <= 65535);
+
+}  // namespace raster

@@ -1,0 +1,63 @@
+// The contract between the pipeline and a programmable shader. A shader is a plain C++ type; the pipeline
+// (pipeline.h) is a template over it, so there is no virtual call per vertex or fragment, and a shader without
+// a fragment stage compiles to the lean depth-only path.
+//
+//   struct MyShader {
+//     using Vertex = MyVertex;                  // what the vertex buffer holds
+//     struct Varyings { glm::vec3 n; glm::vec2 uv; };  // floats only; interpolated perspective-correctly
+//     glm::vec4 vertex(const Vertex& v, Varyings& out) const;   // returns the clip-space position
+//     // Optional fragment stage, one 2×2 quad at a time (so it can take derivatives, see quad.h):
+//     void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const;
+//     static constexpr bool kDiscards = false;     // may set QuadOut::discard   (default false)
+//     static constexpr bool kWritesDepth = false;  // writes QuadOut::depth      (default false)
+//   };
+//
+// Early depth testing is used whenever the shader neither discards nor writes depth, as on a GPU.
+#pragma once
+#include <concepts>
+#include <type_traits>
+
+#include <glm/vec4.hpp>
+
+#include "raster/quad.h"
+
+namespace raster {
+
+// Varyings of a shader that passes nothing to the fragment stage.
+struct NoVaryings {};
+
+template <class V>
+inline constexpr int kVaryingFloats = std::is_empty_v<V> ? 0 : int(sizeof(V) / sizeof(float));
+
+template <class S>
+concept VertexShader = requires(const S& s, const typename S::Vertex& v, typename S::Varyings& out) {
+  { s.vertex(v, out) } -> std::convertible_to<glm::vec4>;
+} && std::is_trivially_copyable_v<typename S::Varyings> &&
+                       (std::is_empty_v<typename S::Varyings> || sizeof(typename S::Varyings) % sizeof(float) == 0);
+
+template <class S>
+concept HasFragmentStage = requires(const S& s, const QuadIn<typename S::Varyings>& q, QuadOut& o) {
+  s.fragment(q, o);
+};
+
+template <class S>
+constexpr bool shader_discards() {
+  if constexpr (requires { S::kDiscards; }) return S::kDiscards;
+  return false;
+}
+
+template <class S>
+constexpr bool shader_writes_depth() {
+  if constexpr (requires { S::kWritesDepth; }) return S::kWritesDepth;
+  return false;
+}
+
+// The simplest shader: positions already in clip space, depth only. Used by depth passes that are given
+// final matrices, by the conformance tests and by the benchmarks.
+struct ClipSpaceDepthShader {
+  using Vertex = glm::vec4;
+  using Varyings = NoVaryings;
+  glm::vec4 vertex(const Vertex& v, Varyings&) const { return v; }
+};
+
+}  // namespace raster

@@ -1,0 +1,130 @@
+// Render target storage, clears and per-texel access (the slow, exact path used by tests, files and readback).
+#include "raster/target.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+
+#include "raster/limits.h"
+
+namespace raster {
+
+AlignedBuffer::AlignedBuffer(size_t bytes) : size_(bytes) {
+  const size_t rounded = (bytes + 63) / 64 * 64;
+  void* p = std::aligned_alloc(64, rounded == 0 ? 64 : rounded);
+  if (!p) throw std::bad_alloc();
+  std::memset(p, 0, rounded == 0 ? 64 : rounded);
+  data_.reset(static_cast<std::byte*>(p));
+}
+
+void AlignedBuffer::Free::operator()(std::byte* p) const { std::free(p); }
+
+void check_target_size(int width, int height) {
+  auto check = [](const char* what, int v) {
+    if (v < 1 || v > kMaxTargetSize)
+      throw TargetSizeError(std::string(what) + " " + std::to_string(v) + " is outside 1.." +
+                            std::to_string(kMaxTargetSize));
+  };
+  check("width", width);
+  check("height", height);
+}
+
+namespace {
+int round_up(int v, int m) { return (v + m - 1) / m * m; }
+
+uint32_t depth_to_raw(float z, DepthFormat f) {
+  z = std::clamp(z, 0.0f, 1.0f);
+  switch (f) {
+    case DepthFormat::d16: return uint32_t(std::nearbyint(double(z) * 65535.0));
+    case DepthFormat::d24: return uint32_t(std::nearbyint(double(z) * 16777215.0));
+    case DepthFormat::d32f: return std::bit_cast<uint32_t>(z);
+  }
+  return 0;
+}
+}  // namespace
+
+DepthTarget::DepthTarget(int width, int height, DepthFormat format)
+    : width_(width), height_(height), format_(format) {
+  check_target_size(width, height);
+  pitch_ = round_up(width, kTileSize);
+  padded_height_ = round_up(height, kTileSize);
+  storage_ = AlignedBuffer(size_t(pitch_) * size_t(padded_height_) * bytes_per_texel());
+  clear(1.0f);
+}
+
+void DepthTarget::clear(float depth) {
+  const uint32_t raw_value = depth_to_raw(depth, format_);
+  const size_t n = size_t(pitch_) * size_t(padded_height_);
+  if (format_ == DepthFormat::d16) {
+    std::fill_n(reinterpret_cast<uint16_t*>(storage_.data()), n, uint16_t(raw_value));
+  } else {
+    std::fill_n(reinterpret_cast<uint32_t*>(storage_.data()), n, raw_value);
+  }
+}
+
+uint32_t DepthTarget::raw(int x, int y) const {
+  return format_ == DepthFormat::d16 ? row<uint16_t>(y)[x] : row<uint32_t>(y)[x];
+}
+
+float DepthTarget::value(int x, int y) const {
+  const uint32_t r = raw(x, y);
+  switch (format_) {
+    case DepthFormat::d16: return float(double(r) / 65535.0);
+    case DepthFormat::d24: return float(double(r) / 16777215.0);
+    case DepthFormat::d32f: return std::bit_cast<float>(r);
+  }
+  return 0.0f;
+}
+
+float srgb_encode(float l) {
+  l = std::clamp(l, 0.0f, 1.0f);
+  return l <= 0.0031308f ? 12.92f * l : 1.055f * std::pow(l, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgb_decode(float e) {
+  e = std::clamp(e, 0.0f, 1.0f);
+  return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f);
+}
+
+ColorTarget::ColorTarget(int width, int height, ColorFormat format, bool srgb)
+    : width_(width), height_(height), format_(format), srgb_(srgb && format == ColorFormat::rgba8) {
+  check_target_size(width, height);
+  pitch_ = round_up(width, kTileSize);
+  padded_height_ = round_up(height, kTileSize);
+  storage_ = AlignedBuffer(size_t(pitch_) * size_t(padded_height_) * (format == ColorFormat::rgba8 ? 4 : 16));
+}
+
+void ColorTarget::clear(const glm::vec4& c) {
+  for (int y = 0; y < padded_height_; ++y)
+    for (int x = 0; x < pitch_; ++x) write(x, y, c);
+}
+
+glm::vec4 ColorTarget::read(int x, int y) const {
+  if (format_ == ColorFormat::rgba32f) {
+    const float* p = row32f(y) + size_t(x) * 4;
+    return {p[0], p[1], p[2], p[3]};
+  }
+  const uint8_t* p = row8(y) + size_t(x) * 4;
+  glm::vec4 c(p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f, p[3] / 255.0f);
+  if (srgb_) c = {srgb_decode(c.r), srgb_decode(c.g), srgb_decode(c.b), c.a};
+  return c;
+}
+
+void ColorTarget::write(int x, int y, const glm::vec4& c) {
+  if (format_ == ColorFormat::rgba32f) {
+    float* p = row32f(y) + size_t(x) * 4;
+    p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = c.a;
+    return;
+  }
+  uint8_t* p = row8(y) + size_t(x) * 4;
+  for (int i = 0; i < 4; ++i) {
+    float v = std::clamp(c[i], 0.0f, 1.0f);
+    if (srgb_ && i < 3) v = srgb_encode(v);
+    p[i] = uint8_t(std::nearbyint(v * 255.0f));
+  }
+}
+
+}  // namespace raster

@@ -1,0 +1,121 @@
+// Render targets: the depth and colour buffers a draw writes and a shader may later sample without copying.
+// Memory is row-major with row 0 at the bottom (window y = 0, texture t = 0), rows padded to a multiple of the
+// tile size so that tile execution can work on whole aligned 8-pixel rows.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include <glm/vec4.hpp>
+
+#include "raster/formats.h"
+
+namespace raster {
+
+// Thrown for a size of 0 or beyond kMaxTargetSize. The message names the offending dimension.
+struct TargetSizeError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// Owns 64-byte aligned, zero-initialised storage of a given byte size.
+class AlignedBuffer {
+ public:
+  AlignedBuffer() = default;
+  explicit AlignedBuffer(size_t bytes);
+  std::byte* data() { return data_.get(); }
+  const std::byte* data() const { return data_.get(); }
+  size_t size() const { return size_; }
+
+ private:
+  struct Free {
+    void operator()(std::byte* p) const;
+  };
+  std::unique_ptr<std::byte[], Free> data_;
+  size_t size_ = 0;
+};
+
+// A depth buffer in one of the formats of CONVENTIONS: d16 stores round(z·65535) as uint16, d24 stores
+// round(z·16777215) in the low 24 bits of a uint32, d32f stores the float z clamped to [0, 1].
+class DepthTarget {
+ public:
+  DepthTarget(int width, int height, DepthFormat format);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  DepthFormat format() const { return format_; }
+  // Elements (not bytes) between the starts of two consecutive rows.
+  int pitch() const { return pitch_; }
+  int padded_height() const { return padded_height_; }
+  size_t bytes_per_texel() const { return format_ == DepthFormat::d16 ? 2 : 4; }
+
+  // Clears every texel to the given depth (converted to the format; default 1.0 as in GL).
+  void clear(float depth = 1.0f);
+
+  // The stored value at pixel (x, y) (y = 0 is the bottom row) as a float in [0, 1]: code / max code for the
+  // unorm formats, the float itself for d32f.
+  float value(int x, int y) const;
+  // The raw stored value: the unorm code, or the bit pattern of the float for d32f.
+  uint32_t raw(int x, int y) const;
+
+  template <class T>
+  T* row(int y) {
+    return reinterpret_cast<T*>(storage_.data()) + size_t(y) * size_t(pitch_);
+  }
+  template <class T>
+  const T* row(int y) const {
+    return reinterpret_cast<const T*>(storage_.data()) + size_t(y) * size_t(pitch_);
+  }
+
+ private:
+  int width_, height_, pitch_, padded_height_;
+  DepthFormat format_;
+  AlignedBuffer storage_;
+};
+
+// A colour buffer: RGBA8 (unorm, optionally sRGB-encoded on write as GL_SRGB8_ALPHA8) or RGBA32F.
+class ColorTarget {
+ public:
+  ColorTarget(int width, int height, ColorFormat format, bool srgb = false);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  ColorFormat format() const { return format_; }
+  bool srgb() const { return srgb_; }
+  int pitch() const { return pitch_; }
+  int padded_height() const { return padded_height_; }
+
+  void clear(const glm::vec4& color);
+  // Linear colour at (x, y): unorm values divided by 255 (and decoded from sRGB when the target is sRGB).
+  glm::vec4 read(int x, int y) const;
+  // Stores a linear colour with GL's conversion: clamp to [0, 1], sRGB-encode if the target is sRGB, then
+  // round(c · 255) for RGBA8; RGBA32F stores the value unchanged.
+  void write(int x, int y, const glm::vec4& c);
+
+  uint8_t* row8(int y) { return reinterpret_cast<uint8_t*>(storage_.data()) + size_t(y) * size_t(pitch_) * 4; }
+  const uint8_t* row8(int y) const {
+    return reinterpret_cast<const uint8_t*>(storage_.data()) + size_t(y) * size_t(pitch_) * 4;
+  }
+  float* row32f(int y) { return reinterpret_cast<float*>(storage_.data()) + size_t(y) * size_t(pitch_) * 4; }
+  const float* row32f(int y) const {
+    return reinterpret_cast<const float*>(storage_.data()) + size_t(y) * size_t(pitch_) * 4;
+  }
+
+ private:
+  int width_, height_, pitch_, padded_height_;
+  ColorFormat format_;
+  bool srgb_;
+  AlignedBuffer storage_;
+};
+
+// Checks a requested target size, throwing TargetSizeError with a message like
+// "width 0 is outside 1..16384" when it is out of range.
+void check_target_size(int width, int height);
+
+// GL's sRGB transfer functions (exact formulas of the sRGB standard, in float).
+float srgb_encode(float linear);
+float srgb_decode(float encoded);
+
+}  // namespace raster
