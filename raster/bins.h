@@ -1,0 +1,52 @@
+// Binning: the triangles set up by one chunk of a draw, sorted by the tiles they touch. Each tile's slice of a
+// chunk is a contiguous array of TriangleSetup copies (bins carry the data, not indices), in submission order;
+// tile execution walks the chunks in order, so primitive order is kept whatever thread made which chunk.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "raster/limits.h"
+#include "raster/primitive.h"
+
+namespace raster {
+
+struct TileGrid {
+  int tiles_x = 0, tiles_y = 0;
+  int count() const { return tiles_x * tiles_y; }
+  static TileGrid for_size(int width, int height) {
+    return {(width + kTileSize - 1) >> kTileSizeLog2, (height + kTileSize - 1) >> kTileSizeLog2};
+  }
+};
+
+struct ChunkBins {
+  std::vector<TriangleSetup> setups;   // in submission order, as set up
+  std::vector<TriangleSetup> binned;   // copies grouped by tile
+  std::vector<uint32_t> offsets;       // tile k's commands: binned[offsets[k] .. offsets[k + 1])
+
+  void clear() { setups.clear(); }
+
+  // Sorts `setups` into per-tile slices (a counting sort: count, prefix sum, scatter).
+  void bin(const TileGrid& grid) {
+    offsets.assign(size_t(grid.count()) + 1, 0u);
+    for (const TriangleSetup& t : setups) for_each_tile(t, grid, [&](int k) { ++offsets[size_t(k) + 1]; });
+    for (size_t k = 1; k < offsets.size(); ++k) offsets[k] += offsets[k - 1];
+    binned.resize(offsets.back());
+    std::vector<uint32_t>& cursor = scratch_;
+    cursor.assign(offsets.begin(), offsets.end() - 1);
+    for (const TriangleSetup& t : setups) for_each_tile(t, grid, [&](int k) { binned[cursor[size_t(k)]++] = t; });
+  }
+
+  template <class F>
+  static void for_each_tile(const TriangleSetup& t, const TileGrid& grid, F&& f) {
+    const int tx0 = t.min_x >> kTileSizeLog2, tx1 = t.max_x >> kTileSizeLog2;
+    const int ty0 = t.min_y >> kTileSizeLog2, ty1 = t.max_y >> kTileSizeLog2;
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx) f(ty * grid.tiles_x + tx);
+  }
+
+ private:
+  std::vector<uint32_t> scratch_;
+};
+
+}  // namespace raster

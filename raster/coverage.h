@@ -1,0 +1,152 @@
+// Coverage of one triangle over one 8×8 block: the hierarchical accept/reject test with exact int64 edge
+// values at the block, then, only for edges that cross it, per-pixel int32 edge values eight lanes at a time.
+// Back end of the pipeline; the ranges that make int32 exact are derived in limits.h.
+#pragma once
+#include <algorithm>
+#include <cstdlib>
+#include <cstdint>
+
+#include "raster/limits.h"
+#include "raster/primitive.h"
+#include "raster/simd/vec.h"
+
+namespace raster {
+
+// Lanes [lo, hi] of an 8-lane row.
+inline unsigned lane_range_mask(int lo, int hi) { return ((2u << hi) - 1u) & ~((1u << lo) - 1u); }
+
+// Bit (8·r + l) of the result is set when pixel (bx + l, by + r) is covered, for rows r in [row_lo, row_hi]
+// and lanes in `lanes`; (bx, by) is the block's lower-left pixel.
+[[gnu::always_inline]] inline uint64_t block_coverage(const TriangleSetup& t, int32_t bx, int32_t by, unsigned lanes, int row_lo,
+                               int row_hi) {
+  constexpr int64_t kSpan = kBlockSize - 1;
+  int64_t f0[3];
+  bool crosses[3];
+  for (int k = 0; k < 3; ++k) {
+    const int64_t a = t.a[k], b = t.b[k];
+    f0[k] = a * bx + b * by - t.t[k];
+    const int64_t lo = f0[k] + std::min<int64_t>(a, 0) * kSpan + std::min<int64_t>(b, 0) * kSpan;
+    const int64_t hi = f0[k] + std::max<int64_t>(a, 0) * kSpan + std::max<int64_t>(b, 0) * kSpan;
+    if (hi < 0) return 0;  // the whole block is outside this edge
+    crosses[k] = lo < 0;
+  }
+  uint64_t row_bits = 0;
+  for (int r = row_lo; r <= row_hi; ++r) row_bits |= uint64_t(lanes) << (8 * r);
+  if (!crosses[0] && !crosses[1] && !crosses[2]) return row_bits;  // trivially accepted
+
+  // Per pixel: F = f0 + a·l + b·r; inside iff F >= 0 for every crossing edge, i.e. the OR of the F has no sign bit.
+  using simd::VecI32;
+  const VecI32 lane = VecI32::iota();
+  VecI32 f[3], step[3];
+  for (int k = 0; k < 3; ++k) {
+    const int32_t start = crosses[k] ? int32_t(f0[k] + int64_t(t.b[k]) * row_lo) : 0;
+    f[k] = VecI32::splat(start) + VecI32::splat(crosses[k] ? t.a[k] : 0) * lane;
+    step[k] = VecI32::splat(crosses[k] ? t.b[k] : 0);
+  }
+  uint64_t mask = 0;
+  for (int r = row_lo; r <= row_hi; ++r) {
+    mask |= uint64_t(simd::non_negative(f[0] | f[1] | f[2]).bits() & lanes) << (8 * r);
+    f[0] = f[0] + step[0];
+    f[1] = f[1] + step[1];
+    f[2] = f[2] + step[2];
+  }
+  return mask;
+}
+
+// Largest edge coefficient for which the narrow path's int32 edge values are exact: such a triangle spans at most
+// 256 pixels, every pixel of its box widened by 8 lies within 264 pixels of each edge line, so
+// |F| <= 2 · 2^16 · 264 < 2^26 there.
+inline constexpr int32_t kNarrowMaxCoef = 1 << 16;
+
+// Per-row edge values of the (up to three) edges that cross a region, stepped one row at a time.
+struct EdgeRows {
+  simd::VecI32 f[3], step[3];
+
+  // Edges with crosses[k] false contribute nothing (they are known to be non-negative everywhere).
+  EdgeRows(const TriangleSetup& t, const int64_t* f_start, const bool* crosses) {
+    using simd::VecI32;
+    for (int k = 0; k < 3; ++k) {
+      f[k] = crosses[k] ? VecI32::splat(int32_t(f_start[k])) + VecI32::splat(t.a[k]) * VecI32::iota()
+                        : VecI32::splat(0);
+      step[k] = VecI32::splat(crosses[k] ? t.b[k] : 0);
+    }
+  }
+  simd::Mask inside() const { return simd::non_negative(f[0] | f[1] | f[2]); }
+  void next_row() {
+    f[0] = f[0] + step[0];
+    f[1] = f[1] + step[1];
+    f[2] = f[2] + step[2];
+  }
+};
+
+// Rasterizes one triangle within `r` (a rectangle inside one tile) and hands covered pixels to the stage.
+// A row stage (depth-only) has columns(t, x) and row(t, columns, x, y, Mask) entries and gets one 8-lane segment
+// per row; narrow triangles (at most 8 pixels wide within `r`) take one segment placed inside the tile, others
+// go through 8×8 blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks.
+template <class Stage>
+inline void rasterize(const TriangleSetup& t, const PixelRect& r, const Stage& stage) {
+  constexpr bool kRowStage = requires { stage.columns(t, 0); };
+  const int32_t x0 = std::max(t.min_x, r.x0), x1 = std::min(t.max_x, r.x1);
+  const int32_t y0 = std::max(t.min_y, r.y0), y1 = std::min(t.max_y, r.y1);
+  if (x0 > x1 || y0 > y1) return;
+  if constexpr (kRowStage) {
+    const bool small = std::abs(t.a[0]) <= kNarrowMaxCoef && std::abs(t.a[1]) <= kNarrowMaxCoef &&
+                       std::abs(t.a[2]) <= kNarrowMaxCoef && std::abs(t.b[0]) <= kNarrowMaxCoef &&
+                       std::abs(t.b[1]) <= kNarrowMaxCoef && std::abs(t.b[2]) <= kNarrowMaxCoef;
+    if (x1 - x0 < kBlockSize && small) {
+      const int32_t xs = std::min(x0, (x0 | (kTileSize - 1)) - (kBlockSize - 1));  // segment stays in the tile
+      const simd::Mask lanes = simd::Mask::from_bits(lane_range_mask(x0 - xs, x1 - xs));
+      int64_t f_start[3];
+      const bool crosses[3] = {true, true, true};
+      for (int k = 0; k < 3; ++k) f_start[k] = int64_t(t.a[k]) * xs + int64_t(t.b[k]) * y0 - t.t[k];
+      EdgeRows edges(t, f_start, crosses);
+      const auto cols = stage.columns(t, xs);
+      for (int32_t y = y0; y <= y1; ++y) {
+        const simd::Mask m = lanes & edges.inside();
+        if (m.any()) stage.row(t, cols, xs, y, m);
+        edges.next_row();
+      }
+      return;
+    }
+  }
+  constexpr int64_t kSpan = kBlockSize - 1;
+  for (int32_t by = y0 & ~(kBlockSize - 1); by <= y1; by += kBlockSize) {
+    const int row_lo = std::max(y0 - by, 0), row_hi = std::min(y1 - by, kBlockSize - 1);
+    for (int32_t bx = x0 & ~(kBlockSize - 1); bx <= x1; bx += kBlockSize) {
+      const unsigned lane_bits = lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1));
+      if constexpr (kRowStage) {
+        // Hierarchical test: the exact int64 edge value at the block's first pixel and its range over the block.
+        int64_t f_start[3];
+        bool crosses[3];
+        bool outside = false;
+        for (int k = 0; k < 3; ++k) {
+          const int64_t a = t.a[k], b = t.b[k];
+          const int64_t f0 = a * bx + b * by - t.t[k];
+          const int64_t lo = f0 + std::min<int64_t>(a, 0) * kSpan + std::min<int64_t>(b, 0) * kSpan;
+          const int64_t hi = f0 + std::max<int64_t>(a, 0) * kSpan + std::max<int64_t>(b, 0) * kSpan;
+          outside |= hi < 0;
+          crosses[k] = lo < 0;
+          f_start[k] = f0 + b * row_lo;
+        }
+        if (outside) continue;
+        const simd::Mask lanes = simd::Mask::from_bits(lane_bits);
+        const auto cols = stage.columns(t, bx);
+        if (!crosses[0] && !crosses[1] && !crosses[2]) {  // trivially accepted
+          for (int r = row_lo; r <= row_hi; ++r) stage.row(t, cols, bx, by + r, lanes);
+          continue;
+        }
+        EdgeRows edges(t, f_start, crosses);
+        for (int r = row_lo; r <= row_hi; ++r) {
+          const simd::Mask m = lanes & edges.inside();
+          if (m.any()) stage.row(t, cols, bx, by + r, m);
+          edges.next_row();
+        }
+      } else {
+        const uint64_t mask = block_coverage(t, bx, by, lane_bits, row_lo, row_hi);
+        if (mask) stage.block(t, bx, by, mask);
+      }
+    }
+  }
+}
+
+}  // namespace raster

@@ -1,0 +1,52 @@
+// The lean back end of a depth-only draw: for each covered 8-pixel row of a block, the interpolated depth,
+// clamp, conversion to the format, depth test and masked write. No varyings, no colour, no quads.
+#pragma once
+#include <cstdint>
+
+#include "raster/depth_test.h"
+#include "raster/primitive.h"
+#include "raster/simd/vec.h"
+#include "raster/target.h"
+
+namespace raster {
+
+// Depth of the eight pixels (bx + l, y) on the triangle's plane, clamped to [0, 1]. Shared by every back end so
+// that a triangle gets the same depth whichever path draws it.
+// The depth is z_ref + dzdx·(x − min_x) + dzdy·(y − min_y), evaluated as two fused multiply-adds: first the
+// column part for eight pixels, then the row part.
+inline simd::VecF32 plane_depth_columns(const TriangleSetup& t, int32_t bx) {
+  using simd::VecF32;
+  const VecF32 dx = VecF32::splat(float(bx - t.min_x)) + VecF32::iota();
+  return simd::fma(VecF32::splat(t.dzdx), dx, VecF32::splat(t.z_ref));
+}
+
+inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, int32_t dy) {
+  using simd::VecF32;
+  const VecF32 z = simd::fma(dzdy, VecF32::splat(float(dy)), zcol);
+  return simd::min(simd::max(z, VecF32::splat(0.0f)), VecF32::splat(1.0f));
+}
+
+inline simd::VecF32 plane_depth_row(const TriangleSetup& t, int32_t bx, int32_t y) {
+  return plane_depth_clamped(plane_depth_columns(t, bx), simd::VecF32::splat(t.dzdy), y - t.min_y);
+}
+
+template <DepthFormat Format, DepthFunc Func, bool Write>
+struct DepthOnlyStage {
+  using Traits = DepthTraits<Format>;
+  DepthTarget* depth;
+
+  // The column part of the depth plane for the segment starting at x, computed once per segment.
+  simd::VecF32 columns(const TriangleSetup& t, int32_t x) const { return plane_depth_columns(t, x); }
+
+  // Eight pixels (x + l, y) for the lanes set in `covered`.
+  [[gnu::always_inline]] void row(const TriangleSetup& t, simd::VecF32 zcol, int32_t x, int32_t y,
+                                  simd::Mask covered) const {
+    auto* p = depth->row<typename Traits::Storage>(y) + x;
+    const auto frag = Traits::from_depth(plane_depth_clamped(zcol, simd::VecF32::splat(t.dzdy), y - t.min_y));
+    const auto stored = Traits::load(p);
+    const simd::Mask pass = depth_compare<Func>(frag, stored) & covered;
+    if constexpr (Write) Traits::store(p, simd::select(pass, stored, frag));
+  }
+};
+
+}  // namespace raster

@@ -1,0 +1,37 @@
+// Plain records that cross stage boundaries: the window-space vertex produced by the viewport transform, the
+// draw's window-space limits, and the triangle setup record that bins carry to tile execution.
+#pragma once
+#include <cstdint>
+
+namespace raster {
+
+// A vertex after the perspective divide and viewport transform (CONVENTIONS: float maths, FMA), and its
+// position snapped to 1/256 pixel.
+struct WindowVertex {
+  float x, y, z;   // window coordinates, z in [0, 1] before polygon offset
+  float inv_w;     // 1 / w_clip
+  int32_t sx, sy;  // snapped: round_half_even(x · 256), round_half_even(y · 256)
+};
+
+// The rectangle a draw may touch (viewport ∩ scissor ∩ target), inclusive pixel bounds.
+struct PixelRect {
+  int32_t x0, y0, x1, y1;
+  bool empty() const { return x0 > x1 || y0 > y1; }
+};
+
+// One triangle ready for tile execution: three edges as exact integer functions of the pixel index
+// (pixel (i, j) is inside edge k iff a[k]·i + b[k]·j >= t[k]; see limits.h for the derivation), its pixel
+// bounding box clamped to the draw's rectangle, and its window-space depth plane. Bins carry copies of it.
+struct alignas(16) TriangleSetup {
+  int64_t t[3];
+  int32_t a[3], b[3];
+  int32_t min_x, min_y, max_x, max_y;
+  float z_ref;       // depth (with polygon offset) at the centre of pixel (min_x, min_y)
+  float dzdx, dzdy;  // window-space depth slopes
+  uint32_t prim;     // shaded draws: index of the triangle's interpolation record; bit 31: back-facing
+};
+static_assert(sizeof(TriangleSetup) == 80);
+
+inline constexpr uint32_t kBackFacingBit = 0x80000000u;
+
+}  // namespace raster

@@ -1,0 +1,76 @@
+// Portable scalar twin of vec_avx2.h: the same eight-lane types and functions on plain arrays, bit-identical
+// results (IEEE float operations, std::fma, round-to-nearest-even).
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+namespace raster::simd {
+
+struct VecI32 {
+  alignas(32) int32_t v[8];
+  static VecI32 splat(int32_t x) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = x; return r; }
+  static VecI32 iota() { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = i; return r; }
+  static VecI32 load(const int32_t* p) { VecI32 r; std::memcpy(r.v, p, 32); return r; }
+  static VecI32 load_u32(const uint32_t* p) { VecI32 r; std::memcpy(r.v, p, 32); return r; }
+  static VecI32 load_u16(const uint16_t* p) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = p[i]; return r; }
+  void store_u32(uint32_t* p) const { std::memcpy(p, v, 32); }
+  void store_u16(uint16_t* p) const { for (int i = 0; i < 8; ++i) p[i] = uint16_t(v[i]); }
+  template <class F> static VecI32 map(VecI32 a, VecI32 b, F f) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = f(a.v[i], b.v[i]); return r; }
+  friend VecI32 operator+(VecI32 a, VecI32 b) { return map(a, b, [](int32_t x, int32_t y) { return int32_t(uint32_t(x) + uint32_t(y)); }); }
+  friend VecI32 operator-(VecI32 a, VecI32 b) { return map(a, b, [](int32_t x, int32_t y) { return int32_t(uint32_t(x) - uint32_t(y)); }); }
+  friend VecI32 operator*(VecI32 a, VecI32 b) { return map(a, b, [](int32_t x, int32_t y) { return int32_t(uint32_t(x) * uint32_t(y)); }); }
+  friend VecI32 operator|(VecI32 a, VecI32 b) { return map(a, b, [](int32_t x, int32_t y) { return x | y; }); }
+  friend VecI32 operator&(VecI32 a, VecI32 b) { return map(a, b, [](int32_t x, int32_t y) { return x & y; }); }
+};
+
+struct VecF32 {
+  alignas(32) float v[8];
+  static VecF32 splat(float x) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = x; return r; }
+  static VecF32 iota() { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = float(i); return r; }
+  static VecF32 load(const float* p) { VecF32 r; std::memcpy(r.v, p, 32); return r; }
+  void store(float* p) const { std::memcpy(p, v, 32); }
+  template <class F> static VecF32 map(VecF32 a, VecF32 b, F f) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = f(a.v[i], b.v[i]); return r; }
+  friend VecF32 operator+(VecF32 a, VecF32 b) { return map(a, b, [](float x, float y) { return x + y; }); }
+  friend VecF32 operator-(VecF32 a, VecF32 b) { return map(a, b, [](float x, float y) { return x - y; }); }
+  friend VecF32 operator*(VecF32 a, VecF32 b) { return map(a, b, [](float x, float y) { return x * y; }); }
+};
+
+inline VecF32 fma(VecF32 a, VecF32 b, VecF32 c) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = std::fma(a.v[i], b.v[i], c.v[i]); return r; }
+// Matches minps/maxps: the second operand is returned when either is NaN.
+inline VecF32 min(VecF32 a, VecF32 b) { return VecF32::map(a, b, [](float x, float y) { return x < y ? x : y; }); }
+inline VecF32 max(VecF32 a, VecF32 b) { return VecF32::map(a, b, [](float x, float y) { return x > y ? x : y; }); }
+inline VecF32 to_float(VecI32 a) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = float(a.v[i]); return r; }
+inline VecI32 round_to_int(VecF32 a) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = int32_t(std::nearbyint(a.v[i])); return r; }
+inline VecF32 bitcast_f32(VecI32 a) { VecF32 r; std::memcpy(r.v, a.v, 32); return r; }
+inline VecI32 bitcast_i32(VecF32 a) { VecI32 r; std::memcpy(r.v, a.v, 32); return r; }
+
+struct Mask {
+  unsigned m;  // bit l: lane l
+  static Mask all() { return {0xFFu}; }
+  static Mask from_bits(unsigned b) { return {b & 0xFFu}; }
+  unsigned bits() const { return m; }
+  bool any() const { return m != 0; }
+  friend Mask operator&(Mask a, Mask b) { return {a.m & b.m}; }
+  friend Mask operator|(Mask a, Mask b) { return {a.m | b.m}; }
+  friend Mask and_not(Mask a, Mask b) { return {a.m & ~b.m & 0xFFu}; }
+};
+
+template <class T, class F>
+inline Mask lanes_where(const T& a, const T& b, F f) { unsigned m = 0; for (int i = 0; i < 8; ++i) m |= unsigned(f(a.v[i], b.v[i])) << i; return {m}; }
+
+inline Mask negative(VecI32 a) { return lanes_where(a, a, [](int32_t x, int32_t) { return x < 0; }); }
+inline Mask non_negative(VecI32 a) { return lanes_where(a, a, [](int32_t x, int32_t) { return x >= 0; }); }
+inline Mask cmp_lt(VecF32 a, VecF32 b) { return lanes_where(a, b, [](float x, float y) { return x < y; }); }
+inline Mask cmp_le(VecF32 a, VecF32 b) { return lanes_where(a, b, [](float x, float y) { return x <= y; }); }
+inline Mask cmp_eq(VecF32 a, VecF32 b) { return lanes_where(a, b, [](float x, float y) { return x == y; }); }
+inline Mask cmp_neq(VecF32 a, VecF32 b) { return lanes_where(a, b, [](float x, float y) { return !(x == y); }); }
+inline Mask cmp_lt(VecI32 a, VecI32 b) { return lanes_where(a, b, [](int32_t x, int32_t y) { return x < y; }); }
+inline Mask cmp_le(VecI32 a, VecI32 b) { return lanes_where(a, b, [](int32_t x, int32_t y) { return x <= y; }); }
+inline Mask cmp_eq(VecI32 a, VecI32 b) { return lanes_where(a, b, [](int32_t x, int32_t y) { return x == y; }); }
+inline Mask cmp_neq(VecI32 a, VecI32 b) { return lanes_where(a, b, [](int32_t x, int32_t y) { return x != y; }); }
+
+inline VecF32 select(Mask m, VecF32 a, VecF32 b) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = (m.m >> i & 1) ? b.v[i] : a.v[i]; return r; }
+inline VecI32 select(Mask m, VecI32 a, VecI32 b) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = (m.m >> i & 1) ? b.v[i] : a.v[i]; return r; }
+
+}  // namespace raster::simd

@@ -1,0 +1,41 @@
+// ThreadPool over a oneTBB task arena limited to the requested concurrency (see thread_pool.h).
+#include "raster/thread_pool.h"
+
+#include <algorithm>
+#include <thread>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+namespace raster {
+
+struct ThreadPool::Impl {
+  explicit Impl(int n) : arena(n) {}
+  tbb::task_arena arena;
+};
+
+int hardware_threads() { return std::max(1, int(std::thread::hardware_concurrency())); }
+
+ThreadPool::ThreadPool(int threads) : threads_(threads < 0 ? hardware_threads() : threads) {
+  if (threads_ > 0) impl_ = std::make_unique<Impl>(threads_);
+}
+
+ThreadPool::~ThreadPool() = default;
+
+void ThreadPool::parallel_for(size_t n, const std::function<void(size_t)>& fn) {
+  if (n == 0) return;
+  if (!impl_ || n == 1) {
+    for (size_t i = 0; i < n; ++i) fn(i);
+    return;
+  }
+  impl_->arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t i = r.begin(); i != r.end(); ++i) fn(i);
+                      },
+                      tbb::simple_partitioner());
+  });
+}
+
+}  // namespace raster

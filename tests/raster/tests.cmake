@@ -1,0 +1,6 @@
+# Tests of raster/: coverage, tie rule, clipping, depth formats, polygon offset, culling, viewport and scissor,
+# interpolation, determinism across thread counts.
+list(APPEND SHADOWLAB_TEST_SOURCES
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/coverage_test.cpp
+)
+list(APPEND SHADOWLAB_TEST_LIBS shadowlab::raster)
