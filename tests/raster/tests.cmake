@@ -2,5 +2,8 @@
 # interpolation, determinism across thread counts.
 list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/coverage_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/clip_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/depth_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/state_test.cpp
 )
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::raster)
