@@ -34,21 +34,6 @@ SetupParams make_setup_params(const DrawState& s, int tw, int th, DepthFormat fo
   return p;
 }
 
-WindowVertex to_window(const glm::vec4& c, const SetupParams& p) {
-  // CONVENTIONS: ndc = clip · (1/w) with an IEEE division and float products, then one fused multiply-add.
-  const float inv_w = 1.0f / c.w;
-  const float nx = c.x * inv_w, ny = c.y * inv_w, nz = c.z * inv_w;
-  WindowVertex v;
-  v.x = std::fma(nx, p.vp_half_w, p.vp_center_x);
-  v.y = std::fma(ny, p.vp_half_h, p.vp_center_y);
-  v.z = std::fma(nz, 0.5f, 0.5f);
-  v.inv_w = inv_w;
-  // x · 256 is exact in float; nearbyint rounds half to even in the default rounding mode.
-  v.sx = int32_t(std::nearbyint(v.x * float(kSubpixelScale)));
-  v.sy = int32_t(std::nearbyint(v.y * float(kSubpixelScale)));
-  return v;
-}
-
 float polygon_offset_r(DepthFormat format, float max_depth) {
   switch (format) {
     case DepthFormat::d16: return 2.0f / 65535.0f;
@@ -109,15 +94,15 @@ SetupResult setup_triangle(const WindowVertex& v0, const WindowVertex& v1, const
   setup_edge(b.sx, b.sy, c.sx, c.sy, 1, out);
   setup_edge(c.sx, c.sy, a.sx, a.sy, 2, out);
 
-  // Depth plane through the snapped positions, in double, evaluated at the box's first pixel centre.
-  const double s = 1.0 / kSubpixelScale;
-  const double x0 = v0.sx * s, y0 = v0.sy * s;
-  const double x1 = v1.sx * s - x0, y1 = v1.sy * s - y0;
-  const double x2 = v2.sx * s - x0, y2 = v2.sy * s - y0;
+  // Depth plane through the unsnapped float window positions (as llvmpipe sets it up: with snapped positions
+  // depths differ from it by up to |dz/dx| / 512), in double, evaluated at the box's first pixel centre.
+  const double x0 = v0.x, y0 = v0.y;
+  const double x1 = double(v1.x) - x0, y1 = double(v1.y) - y0;
+  const double x2 = double(v2.x) - x0, y2 = double(v2.y) - y0;
   const double z1 = double(v1.z) - v0.z, z2 = double(v2.z) - v0.z;
-  const double det = x1 * y2 - x2 * y1;
-  const double dzdx = (z1 * y2 - z2 * y1) / det;
-  const double dzdy = (z2 * x1 - z1 * x2) / det;
+  const double inv_det = 1.0 / (x1 * y2 - x2 * y1);
+  const double dzdx = (z1 * y2 - z2 * y1) * inv_det;
+  const double dzdy = (z2 * x1 - z1 * x2) * inv_det;
   double z_ref = v0.z + dzdx * (out.min_x + 0.5 - x0) + dzdy * (out.min_y + 0.5 - y0);
   if (p.offset.factor != 0.0f || p.offset.units != 0.0f) {
     const double m = std::max(std::abs(dzdx), std::abs(dzdy));

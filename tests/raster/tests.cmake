@@ -7,3 +7,8 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/state_test.cpp
 )
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::raster)
+# Conformance against Mesa llvmpipe needs the GL reference (tests/gl).
+if(TARGET shadowlab::glref)
+  list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/raster/conformance_test.cpp)
+  list(APPEND SHADOWLAB_TEST_LIBS shadowlab::glref shadowlab::scenes)
+endif()
