@@ -1,0 +1,38 @@
+// The built-in `tutorial` and `tutorial-spot` scenes: the room of the classic OpenGL shadow-mapping tutorial
+// (thick walls so back faces can build the map, a floor, a cylinder and a sphere), lit by its directional light
+// towards (0.5, 2, 2) or by its spot light at (5, 20, 20) pointing back along that direction.
+#include "scenes/builtin_parts.h"
+
+namespace scenes::builtin {
+
+SceneDesc tutorial(bool spot) {
+  SceneDesc d;
+  d.materials = {material("room", {0.78f, 0.75f, 0.70f}), material("cylinder", {0.30f, 0.50f, 0.80f}),
+                 material("sphere", {0.85f, 0.35f, 0.25f}, 0.5f, 20.0f)};
+  // Interior 12 x 5 x 12 m with 0.5 m walls on the left, right and back; open towards the camera and the sky.
+  const RoomShape room{{12.0f, 5.0f, 12.0f}, 0.5f, room_floor | room_neg_x | room_pos_x | room_neg_z};
+  d.objects.push_back(object("room", room, {0, 0, 0}, "room"));
+  d.objects.push_back(object("cylinder", CylinderShape{0.8f, 3.0f, 48, true}, {-2.0f, 1.5f, -1.5f}, "cylinder"));
+  d.objects.push_back(object("sphere", SphereShape{1.2f, 48, 24}, {2.2f, 1.2f, 0.8f}, "sphere"));
+  d.cameras.push_back(camera("main", {0.0f, 7.5f, 17.0f}, {0.0f, 1.0f, -1.0f}, 45.0f, 0.5f, 60.0f));
+
+  Light l;
+  if (!spot) {
+    l = light("sun", LightType::directional, ShadowTechnique::shadowmap);
+    l.direction = -glm::vec3(0.5f, 2.0f, 2.0f);  // travels from the light: the light is towards (0.5, 2, 2)
+  } else {
+    l = light("spot", LightType::spot, ShadowTechnique::shadowmap);
+    l.position = {5.0f, 20.0f, 20.0f};
+    l.direction = -glm::vec3(0.5f, 2.0f, 2.0f);  // the axis passes through the origin
+    l.inner_cone_deg = 17.5f;
+    l.outer_cone_deg = 22.5f;                    // the tutorial's 45° perspective frustum
+    l.range = 50.0f;
+  }
+  l.shadow.filter = ShadowFilter::pcf;
+  l.shadow.bias.mode = BiasMode::slope;
+  l.shadow.cull_front = true;  // the tutorial draws back faces into the map, in addition to the bias
+  d.lights.push_back(l);
+  return d;
+}
+
+}  // namespace scenes::builtin

@@ -1,0 +1,190 @@
+// Checked glTF accessor reads (see gltf_accessors.h): bounds of accessor, buffer view and buffer, component
+// types allowed per use, normalized integers, and sparse substitution.
+#include "scenes/gltf_accessors.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "scenes/scene_error.h"
+
+namespace scenes::gltf {
+namespace {
+
+size_t component_size(int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_INT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+size_t components_of(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+    default: return 0;
+  }
+}
+
+const char* type_name(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    default: return "VEC4";
+  }
+}
+
+template <typename Raw>
+Raw load(const unsigned char* p) {
+  Raw v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+// One component as a float (normalized integers mapped to [0, 1] or [-1, 1] as glTF specifies).
+float as_float(const unsigned char* p, int type, bool normalized) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return load<float>(p);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? load<uint8_t>(p) / 255.0f : load<uint8_t>(p);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return normalized ? load<uint16_t>(p) / 65535.0f : load<uint16_t>(p);
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return normalized ? std::max(load<int8_t>(p) / 127.0f, -1.0f) : load<int8_t>(p);
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return normalized ? std::max(load<int16_t>(p) / 32767.0f, -1.0f) : load<int16_t>(p);
+    default: return float(load<uint32_t>(p));
+  }
+}
+
+// Larger accessors are rejected before anything is allocated (2^28 elements: 3 GiB of VEC3 floats).
+constexpr size_t kMaxElements = size_t(1) << 28;
+
+uint32_t as_uint(const unsigned char* p, int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return load<uint8_t>(p);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<uint16_t>(p);
+    default: return load<uint32_t>(p);
+  }
+}
+
+}  // namespace
+
+void AccessorReader::fail(const std::string& key, const std::string& message) const {
+  throw SceneError(file_, key, message);
+}
+
+const unsigned char* AccessorReader::span_of(int buffer_view, size_t offset, size_t stride, size_t count,
+                                             size_t element, const std::string& key) const {
+  const std::string bv = "bufferViews[" + std::to_string(buffer_view) + "]";
+  if (buffer_view < 0 || size_t(buffer_view) >= model_.bufferViews.size())
+    fail(key, "buffer view " + std::to_string(buffer_view) + " does not exist");
+  const tinygltf::BufferView& view = model_.bufferViews[size_t(buffer_view)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size())
+    fail(bv, "buffer " + std::to_string(view.buffer) + " does not exist");
+  const std::vector<unsigned char>& data = model_.buffers[size_t(view.buffer)].data;
+  if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
+    fail(bv, "bytes " + std::to_string(view.byteOffset) + " + " + std::to_string(view.byteLength) +
+                 " lie outside buffer " + std::to_string(view.buffer) + " (" + std::to_string(data.size()) +
+                 " bytes)");
+  if (count == 0) return data.data();
+  const size_t last = offset + (count - 1) * stride + element;  // overflow: counts are bounded by JSON sizes
+  if (offset > view.byteLength || last > view.byteLength || (count - 1) > view.byteLength)
+    fail(key, std::to_string(count) + " elements at offset " + std::to_string(offset) + " run past the end of " +
+                  bv + " (" + std::to_string(view.byteLength) + " bytes)");
+  return data.data() + view.byteOffset + offset;
+}
+
+size_t AccessorReader::count(int index, const std::string& key) const {
+  if (index < 0 || size_t(index) >= model_.accessors.size())
+    fail(key, "accessor " + std::to_string(index) + " does not exist");
+  const size_t n = model_.accessors[size_t(index)].count;
+  if (n > kMaxElements) fail(key, "count " + std::to_string(n) + " is too large");
+  return n;
+}
+
+template <typename T>
+void AccessorReader::read(int index, const std::string& key, int type, Want want, T* out) const {
+  if (index < 0 || size_t(index) >= model_.accessors.size())
+    fail(key, "accessor " + std::to_string(index) + " does not exist");
+  const tinygltf::Accessor& a = model_.accessors[size_t(index)];
+  const std::string where = key + " (accessors[" + std::to_string(index) + "])";
+  if (a.type != type) fail(where, std::string("expected type ") + type_name(type));
+  const int ct = a.componentType;
+  const size_t n = components_of(type), csize = component_size(ct);
+  if (csize == 0) fail(where, "invalid componentType " + std::to_string(ct));
+  const bool is_float = ct == TINYGLTF_COMPONENT_TYPE_FLOAT;
+  const bool is_unsigned = ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                           ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT || ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  if (want == Want::floats && !is_float) fail(where, "expected FLOAT components");
+  if (want == Want::floats_or_normalized && !is_float && !(a.normalized && is_unsigned))
+    fail(where, "expected FLOAT or normalized unsigned components");
+  if (want == Want::unsigned_ints && !is_unsigned) fail(where, "expected unsigned integer components");
+  if (a.count > kMaxElements) fail(where, "count " + std::to_string(a.count) + " is too large");
+  const size_t element = n * csize;
+
+  const unsigned char* p = nullptr;
+  size_t stride = element;
+  if (a.bufferView >= 0) {
+    if (size_t(a.bufferView) < model_.bufferViews.size() && model_.bufferViews[size_t(a.bufferView)].byteStride)
+      stride = model_.bufferViews[size_t(a.bufferView)].byteStride;
+    if (stride < element) fail(where, "byteStride " + std::to_string(stride) + " is smaller than an element");
+    p = span_of(a.bufferView, a.byteOffset, stride, a.count, element, where);
+  }
+  auto convert = [&](const unsigned char* q) {
+    if constexpr (std::is_same_v<T, uint32_t>) return as_uint(q, ct);
+    else return as_float(q, ct, a.normalized);
+  };
+  if (p) {
+    for (size_t i = 0; i < a.count; ++i, p += stride)
+      for (size_t c = 0; c < n; ++c) out[i * n + c] = convert(p + c * csize);
+  } else {
+    std::fill(out, out + a.count * n, T(0));
+  }
+  if (a.sparse.isSparse && a.sparse.count > 0) {
+    const size_t count = size_t(a.sparse.count);
+    if (count > a.count) fail(where + ".sparse", "more sparse values than elements");
+    const int it = a.sparse.indices.componentType;
+    const size_t isize = component_size(it);
+    if (isize == 0 || it == TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where + ".sparse.indices", "invalid componentType");
+    const unsigned char* ip = span_of(a.sparse.indices.bufferView, size_t(a.sparse.indices.byteOffset), isize,
+                                      count, isize, where + ".sparse.indices");
+    const unsigned char* vp = span_of(a.sparse.values.bufferView, size_t(a.sparse.values.byteOffset), element,
+                                      count, element, where + ".sparse.values");
+    for (size_t s = 0; s < count; ++s) {
+      const uint32_t target = as_uint(ip + s * isize, it);
+      if (target >= a.count) fail(where + ".sparse.indices", "index " + std::to_string(target) + " out of range");
+      for (size_t c = 0; c < n; ++c) out[target * n + c] = convert(vp + s * element + c * csize);
+    }
+  }
+}
+
+// glm vectors are tightly packed floats, so they are read in place as flat component arrays.
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
+
+std::vector<glm::vec3> AccessorReader::vec3(int accessor, const std::string& key) const {
+  std::vector<glm::vec3> out(count(accessor, key));
+  read<float>(accessor, key, TINYGLTF_TYPE_VEC3, Want::floats, &out.data()->x);
+  return out;
+}
+
+std::vector<glm::vec2> AccessorReader::vec2(int accessor, const std::string& key) const {
+  std::vector<glm::vec2> out(count(accessor, key));
+  read<float>(accessor, key, TINYGLTF_TYPE_VEC2, Want::floats_or_normalized, &out.data()->x);
+  return out;
+}
+
+std::vector<uint32_t> AccessorReader::indices(int accessor, const std::string& key) const {
+  std::vector<uint32_t> out(count(accessor, key));
+  read<uint32_t>(accessor, key, TINYGLTF_TYPE_SCALAR, Want::unsigned_ints, out.data());
+  return out;
+}
+
+}  // namespace scenes::gltf

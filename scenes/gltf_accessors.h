@@ -1,0 +1,41 @@
+// Reading glTF accessors into typed arrays for the importer, with every index, offset, stride and length checked
+// against the buffers first (sparse accessors included), so a malformed file yields a SceneError naming the key,
+// never a read out of bounds. Internal to the scenes module: only gltf_import.cpp includes it.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <tiny_gltf.h>
+
+namespace scenes::gltf {
+
+class AccessorReader {
+ public:
+  AccessorReader(const tinygltf::Model& model, std::string file) : model_(model), file_(std::move(file)) {}
+
+  // VEC3 of FLOAT (positions, normals).
+  std::vector<glm::vec3> vec3(int accessor, const std::string& key) const;
+  // VEC2 of FLOAT, or normalized UNSIGNED_BYTE / UNSIGNED_SHORT (texture coordinates).
+  std::vector<glm::vec2> vec2(int accessor, const std::string& key) const;
+  // SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT (indices).
+  std::vector<uint32_t> indices(int accessor, const std::string& key) const;
+
+ private:
+  enum class Want { floats, floats_or_normalized, unsigned_ints };
+  // Element count of an accessor, checked to exist and to be of a sane size.
+  size_t count(int accessor, const std::string& key) const;
+  // Flat components of an accessor of `type` (sparse values applied) into `out` (count × components), after
+  // every bound is checked.
+  template <typename T>
+  void read(int accessor, const std::string& key, int type, Want want, T* out) const;
+  const unsigned char* span_of(int buffer_view, size_t offset, size_t stride, size_t count, size_t element,
+                               const std::string& key) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+
+  const tinygltf::Model& model_;
+  std::string file_;
+};
+
+}  // namespace scenes::gltf

@@ -1,0 +1,337 @@
+// glTF 2.0 import (see gltf_import.h): load the file with tinygltf, walk the node hierarchy in double precision,
+// convert each referenced primitive once, then materials, cameras and KHR_lights_punctual lights on demand.
+#include "scenes/gltf_import.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numeric>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scenes/gltf_accessors.h"
+#include "scenes/mesh_ops.h"
+#include "scenes/scene_error.h"
+
+namespace scenes {
+namespace {
+
+std::string indexed(const char* array, size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
+
+// tinygltf's image hook: images are never decoded, only their URI is kept.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+                void*) {
+  return true;
+}
+
+// tinygltf's messages on one line, without nlohmann's "[json.exception.parse_error.101] " tag.
+std::string clean_message(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  for (char& c : s)
+    if (c == '\n') c = ' ';
+  if (const size_t end = s.find("] "); s.rfind("[json.exception.", 0) == 0 && end != std::string::npos)
+    s = s.substr(end + 2);
+  return s;
+}
+
+tinygltf::Model load_model(const std::filesystem::path& path, const std::string& file, Scene& out) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw SceneError(file, "", "cannot open file (" + std::string(std::strerror(errno)) + ")");
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw SceneError(file, "", "cannot read file");
+  if (uint64_t(size) > std::numeric_limits<unsigned int>::max()) throw SceneError(file, "", "file is over 4 GiB");
+  // Not a std::vector: zero-filling tens of megabytes only to overwrite them costs as much as reading them.
+  const std::unique_ptr<unsigned char[]> bytes(new unsigned char[size_t(size)]);
+  in.seekg(0);
+  if (!in.read(reinterpret_cast<char*>(bytes.get()), size)) throw SceneError(file, "", "cannot read file");
+
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&skip_image, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  const std::string dir = path.parent_path().empty() ? std::string(".") : path.parent_path().string();
+  const auto length = static_cast<unsigned int>(size);
+  const bool binary = length >= 4 && std::equal(bytes.get(), bytes.get() + 4, "glTF");
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.get(), length, dir)
+                         : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.get()),
+                                                      length, dir);
+  if (!ok || !err.empty())
+    throw SceneError(file, "", std::string(binary ? "malformed GLB: " : "malformed glTF: ") +
+                                   clean_message(err.empty() ? "tinygltf refused it" : err));
+  if (!warn.empty()) out.warnings.push_back(file + ": " + clean_message(warn));
+  return model;
+}
+
+glm::dmat4 node_matrix(const tinygltf::Node& n) {
+  if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());
+  glm::dmat4 m(1.0);
+  if (n.translation.size() == 3) m = glm::translate(m, glm::make_vec3(n.translation.data()));
+  if (n.rotation.size() == 4)
+    m = m * glm::mat4_cast(glm::normalize(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2])));
+  if (n.scale.size() == 3) m = glm::scale(m, glm::make_vec3(n.scale.data()));
+  return m;
+}
+
+class Importer {
+ public:
+  Importer(const tinygltf::Model& model, std::string file, std::filesystem::path dir, Scene& out)
+      : model_(model), file_(std::move(file)), dir_(std::move(dir)), out_(out), read_(model, file_),
+        materials_(model.materials.size(), -1) {}
+
+  void run() {
+    // Compressed geometry would read as accessors without data: refuse it instead of importing zeros.
+    for (const std::string& ext : model_.extensionsRequired)
+      if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
+        fail("extensionsRequired", "'" + ext + "' is not supported");
+    std::vector<int> roots;
+    if (!model_.scenes.empty()) {
+      const size_t s = model_.defaultScene >= 0 ? size_t(model_.defaultScene) : 0;
+      if (s >= model_.scenes.size()) fail("scene", "scene " + std::to_string(s) + " does not exist");
+      roots = model_.scenes[s].nodes;
+    } else {
+      std::vector<bool> child(model_.nodes.size(), false);
+      for (const tinygltf::Node& n : model_.nodes)
+        for (int c : n.children)
+          if (c >= 0 && size_t(c) < child.size()) child[size_t(c)] = true;
+      for (size_t i = 0; i < child.size(); ++i)
+        if (!child[i]) roots.push_back(int(i));
+    }
+    for (int r : roots) visit(r, glm::dmat4(1.0), 0);
+    if (out_.instances.empty()) fail("", "empty mesh: the file's scene has no triangles");
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+    throw SceneError(file_, key, message);
+  }
+
+  void visit(int index, const glm::dmat4& parent, size_t depth) {
+    if (index < 0 || size_t(index) >= model_.nodes.size())
+      fail("nodes", "node " + std::to_string(index) + " does not exist");
+    const std::string key = indexed("nodes", size_t(index));
+    if (depth > model_.nodes.size()) fail(key, "the node hierarchy has a cycle");
+    const tinygltf::Node& node = model_.nodes[size_t(index)];
+    const glm::dmat4 world = parent * node_matrix(node);
+    const glm::mat4 worldf(world);
+    if (node.mesh >= 0) add_mesh_instances(node, worldf, key);
+    if (node.camera >= 0) add_camera(node, worldf, key);
+    const auto ext = node.extensions.find("KHR_lights_punctual");
+    if (ext != node.extensions.end() && ext->second.Has("light")) {
+      const tinygltf::Value& v = ext->second.Get("light");
+      if (!v.IsInt()) fail(key + ".extensions.KHR_lights_punctual.light", "expected a light index");
+      add_light(v.GetNumberAsInt(), worldf, key);
+    }
+    for (int c : node.children) visit(c, world, depth + 1);
+  }
+
+  void add_mesh_instances(const tinygltf::Node& node, const glm::mat4& world, const std::string& key) {
+    if (size_t(node.mesh) >= model_.meshes.size())
+      fail(key + ".mesh", "mesh " + std::to_string(node.mesh) + " does not exist");
+    const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const auto converted = primitive(size_t(node.mesh), p);
+      if (!converted) continue;
+      Instance inst;
+      inst.name = !node.name.empty() ? node.name : mesh.name;
+      inst.mesh = converted->first;
+      inst.material = converted->second;
+      inst.transform = world;
+      out_.instances.push_back(inst);
+    }
+  }
+
+  // The scene mesh and material of a primitive, converted on first use; nothing for points and lines.
+  std::optional<std::pair<uint32_t, uint32_t>> primitive(size_t m, size_t p) {
+    const auto key = std::make_pair(m, p);
+    if (auto it = primitives_.find(key); it != primitives_.end()) return it->second;
+    const tinygltf::Primitive& prim = model_.meshes[m].primitives[p];
+    const std::string where = indexed("meshes", m) + "." + indexed("primitives", p);
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    std::optional<std::pair<uint32_t, uint32_t>> result;
+    if (mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      out_.meshes.push_back(convert(prim, mode, where, model_.meshes[m].name));
+      result = std::make_pair(uint32_t(out_.meshes.size() - 1), material(prim.material, where));
+    } else if (mode >= 0 && mode <= 3) {
+      out_.warnings.push_back(file_ + ": " + where + ": mode " + std::to_string(mode) + " (points or lines) skipped");
+    } else {
+      fail(where + ".mode", "unknown primitive mode " + std::to_string(mode));
+    }
+    primitives_[key] = result;
+    return result;
+  }
+
+  Mesh convert(const tinygltf::Primitive& prim, int mode, const std::string& where, const std::string& name) {
+    auto attribute = [&](const char* semantic) {
+      const auto it = prim.attributes.find(semantic);
+      return it == prim.attributes.end() ? -1 : it->second;
+    };
+    const std::string attr = where + ".attributes.";
+    Mesh mesh;
+    mesh.name = name;
+    const int position = attribute("POSITION");
+    if (position < 0) fail(where + ".attributes", "no POSITION attribute");
+    mesh.positions = read_.vec3(position, attr + "POSITION");
+    if (const int n = attribute("NORMAL"); n >= 0) {
+      mesh.normals = read_.vec3(n, attr + "NORMAL");
+      if (mesh.normals.size() != mesh.positions.size()) fail(attr + "NORMAL", "count differs from POSITION");
+    }
+    if (const int t = attribute("TEXCOORD_0"); t >= 0) {
+      mesh.texcoords = read_.vec2(t, attr + "TEXCOORD_0");
+      if (mesh.texcoords.size() != mesh.positions.size()) fail(attr + "TEXCOORD_0", "count differs from POSITION");
+    }
+    std::vector<uint32_t> indices;
+    if (prim.indices >= 0) {
+      indices = read_.indices(prim.indices, where + ".indices");
+    } else {
+      indices.resize(mesh.positions.size());
+      std::iota(indices.begin(), indices.end(), 0u);
+    }
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) indices = strip_to_list(indices);
+    else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) indices = fan_to_list(indices);
+    mesh.indices = std::move(indices);
+    if (auto problem = mesh_problem(mesh)) fail(where, *problem);
+    if (const size_t fixed = repair_normals(mesh))
+      out_.warnings.push_back(file_ + ": " + attr + "NORMAL: " + std::to_string(fixed) +
+                              " non-finite or zero normals replaced by computed ones");
+    return mesh;
+  }
+
+  uint32_t material(int index, const std::string& where) {
+    if (index < 0) {
+      if (!default_material_) {
+        out_.materials.push_back(Material{});
+        default_material_ = uint32_t(out_.materials.size() - 1);
+      }
+      return *default_material_;
+    }
+    if (size_t(index) >= model_.materials.size())
+      fail(where + ".material", "material " + std::to_string(index) + " does not exist");
+    if (materials_[size_t(index)] >= 0) return uint32_t(materials_[size_t(index)]);
+    const tinygltf::Material& src = model_.materials[size_t(index)];
+    const std::string key = indexed("materials", size_t(index));
+    Material m;
+    m.name = src.name.empty() ? key : src.name;
+    const auto& pbr = src.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() == 4) m.base_color = glm::vec4(glm::make_vec4(pbr.baseColorFactor.data()));
+    const float roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
+    m.specular_strength = 0.3f * (1.0f - roughness);
+    m.shininess = roughness > 0.0f ? std::clamp(2.0f / std::pow(roughness, 4.0f) - 2.0f, 1.0f, 512.0f) : 512.0f;
+    m.double_sided = src.doubleSided;
+    m.texture = texture_path(pbr.baseColorTexture.index, key + ".pbrMetallicRoughness.baseColorTexture");
+    out_.materials.push_back(m);
+    materials_[size_t(index)] = int(out_.materials.size() - 1);
+    return uint32_t(materials_[size_t(index)]);
+  }
+
+  std::string texture_path(int texture, const std::string& key) {
+    if (texture < 0) return {};
+    if (size_t(texture) >= model_.textures.size()) fail(key, "texture " + std::to_string(texture) + " does not exist");
+    const int source = model_.textures[size_t(texture)].source;
+    if (source < 0) return {};
+    if (size_t(source) >= model_.images.size())
+      fail(indexed("textures", size_t(texture)), "image " + std::to_string(source) + " does not exist");
+    const tinygltf::Image& image = model_.images[size_t(source)];
+    if (image.uri.empty() || image.uri.rfind("data:", 0) == 0) {
+      out_.warnings.push_back(file_ + ": " + indexed("images", size_t(source)) + ": embedded image not kept");
+      return {};
+    }
+    return (dir_ / uri_decode(image.uri)).lexically_normal().generic_string();
+  }
+
+  static std::string uri_decode(const std::string& uri) {
+    std::string out;
+    for (size_t i = 0; i < uri.size(); ++i) {
+      const bool escape = uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(uint8_t(uri[i + 1])) &&
+                          std::isxdigit(uint8_t(uri[i + 2]));
+      if (escape) {
+        out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+        i += 2;
+      } else {
+        out += uri[i];
+      }
+    }
+    return out;
+  }
+
+  void add_camera(const tinygltf::Node& node, const glm::mat4& world, const std::string& key) {
+    if (size_t(node.camera) >= model_.cameras.size())
+      fail(key + ".camera", "camera " + std::to_string(node.camera) + " does not exist");
+    const tinygltf::Camera& src = model_.cameras[size_t(node.camera)];
+    const std::string where = indexed("cameras", size_t(node.camera));
+    Camera c;
+    c.name = !src.name.empty() ? src.name : node.name;
+    c.position = glm::vec3(world * glm::vec4(0, 0, 0, 1));
+    c.target = c.position + glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+    c.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
+    if (src.type == "orthographic") {
+      const auto& o = src.orthographic;
+      if (!(o.xmag != 0.0 && o.ymag != 0.0 && o.zfar > o.znear && o.znear >= 0.0))
+        fail(where + ".orthographic", "needs non-zero xmag and ymag and 0 <= znear < zfar");
+      c.projection = Orthographic{float(-o.xmag), float(o.xmag),  float(-o.ymag),
+                                  float(o.ymag),  float(o.znear), float(o.zfar)};
+    } else {
+      const auto& p = src.perspective;
+      if (!(p.yfov > 0.0 && p.znear > 0.0)) fail(where + ".perspective", "needs a positive yfov and znear");
+      Perspective persp;
+      persp.fovy_deg = float(glm::degrees(p.yfov));
+      if (p.aspectRatio > 0.0) persp.aspect = float(p.aspectRatio);
+      persp.near = float(p.znear);
+      persp.far = p.zfar > p.znear ? float(p.zfar) : float(1000.0 * p.znear);
+      c.projection = persp;
+    }
+    out_.cameras.push_back(c);
+  }
+
+  void add_light(int index, const glm::mat4& world, const std::string& key) {
+    const std::string where = key + ".extensions.KHR_lights_punctual.light";
+    if (index < 0 || size_t(index) >= model_.lights.size())
+      fail(where, "light " + std::to_string(index) + " does not exist");
+    const tinygltf::Light& src = model_.lights[size_t(index)];
+    Light l;
+    l.name = src.name;
+    if (src.type == "directional") l.type = LightType::directional;
+    else if (src.type == "point") l.type = LightType::point;
+    else if (src.type == "spot") l.type = LightType::spot;
+    else fail(where, "unknown light type '" + src.type + "'");
+    if (src.color.size() == 3) l.color = glm::vec3(glm::make_vec3(src.color.data()));
+    l.intensity = float(src.intensity);
+    l.range = float(src.range);
+    l.position = glm::vec3(world * glm::vec4(0, 0, 0, 1));
+    l.direction = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+    l.inner_cone_deg = float(glm::degrees(src.spot.innerConeAngle));
+    l.outer_cone_deg = float(glm::degrees(src.spot.outerConeAngle));
+    l.shadow = default_shadow_settings(l.type);
+    out_.lights.push_back(l);
+  }
+
+  const tinygltf::Model& model_;
+  std::string file_;
+  std::filesystem::path dir_;
+  Scene& out_;
+  gltf::AccessorReader read_;
+  std::map<std::pair<size_t, size_t>, std::optional<std::pair<uint32_t, uint32_t>>> primitives_;
+  std::vector<int> materials_;
+  std::optional<uint32_t> default_material_;
+};
+
+}  // namespace
+
+Scene import_gltf(const std::filesystem::path& path, const std::string& label) {
+  const std::string file = label.empty() ? path.string() : label;
+  Scene out;
+  const tinygltf::Model model = load_model(path, file, out);
+  out.name = path.stem().string();
+  out.objects.push_back(out.name);
+  Importer(model, file, path.parent_path(), out).run();
+  return out;
+}
+
+}  // namespace scenes

@@ -1,0 +1,113 @@
+// The scene model the renderer draws: triangle meshes, instances placing them in the world, materials,
+// cameras and lights with their shadow settings. Plain structs with no behaviour; built by the JSON loader,
+// the glTF importer and the built-in scenes (scene_build.h), queried through scene_queries.h.
+// Units are metres; the world is right-handed with +Y up (CONVENTIONS.md).
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scenes/shadow_settings.h"
+
+namespace scenes {
+
+// A triangle list in model space. Front faces are counter-clockwise. `normals` always has one entry per
+// position once a scene is built; `texcoords` is empty or has one entry per position.
+struct Mesh {
+  std::string name;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  std::vector<glm::vec2> texcoords;
+  std::vector<uint32_t> indices;  // three per triangle
+  size_t triangle_count() const { return indices.size() / 3; }
+  bool operator==(const Mesh&) const = default;
+};
+
+// Blinn-Phong style surface description. `texture` is a path (empty: none); the scenes module never opens it.
+struct Material {
+  std::string name = "default";
+  glm::vec4 base_color{1.0f};       // linear RGBA factor (multiplies the texture when there is one)
+  std::string texture;              // base-colour texture path, resolved against the file that named it
+  glm::vec3 specular_color{1.0f};
+  float specular_strength = 0.3f;   // specular = specular_color * specular_strength * pow(cos, shininess)
+  float shininess = 5.0f;
+  bool double_sided = false;        // glTF doubleSided: do not back-face cull when drawing the colour pass
+  bool operator==(const Material&) const = default;
+};
+
+// One mesh placed in the world. A mesh's winding is already flipped where the transform mirrors
+// (determinant < 0), so world-space front faces are counter-clockwise for every instance.
+struct Instance {
+  std::string name;
+  uint32_t mesh = 0;        // index into Scene::meshes
+  uint32_t material = 0;    // index into Scene::materials
+  uint32_t object = 0;      // the top-level scene object it belongs to (Scene::objects): one caster each
+  glm::mat4 transform{1.0f};
+  bool casts_shadows = true;
+  bool receives_shadows = true;
+  bool operator==(const Instance&) const = default;
+};
+
+struct Perspective {
+  float fovy_deg = 45.0f;         // full vertical field of view, degrees
+  std::optional<float> aspect;    // width / height; none: the viewport's
+  float near = 0.1f;
+  float far = 100.0f;
+  bool operator==(const Perspective&) const = default;
+};
+
+struct Orthographic {
+  float left = -1.0f, right = 1.0f, bottom = -1.0f, top = 1.0f;
+  float near = 0.1f, far = 100.0f;
+  bool operator==(const Orthographic&) const = default;
+};
+
+// A camera looking from `position` at `target`; view = glm::lookAt(position, target, up).
+struct Camera {
+  std::string name;
+  glm::vec3 position{0.0f, 0.0f, 5.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  std::variant<Perspective, Orthographic> projection;
+  bool operator==(const Camera&) const = default;
+};
+
+// A light. `direction` is always the direction the light TRAVELS (from the light into the scene), as in glTF
+// and for the axis of a spot: the tutorial's "light towards (0.5, 2, 2)" is direction = -normalize(0.5, 2, 2).
+// to_light() gives the opposite. In a built scene `direction` is unit length and `range` is positive.
+struct Light {
+  std::string name;
+  LightType type = LightType::directional;
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;
+  glm::vec3 position{0.0f};                   // spot, point, hemispherical
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};     // directional, spot, hemispherical (the way it faces)
+  float inner_cone_deg = 20.0f;               // spot: half-angles from the axis, degrees
+  float outer_cone_deg = 25.0f;
+  float range = 0.0f;                         // spot, point, hemispherical: metres; 0 in a file: scene extent
+  ShadowSettings shadow;
+  bool operator==(const Light&) const = default;
+};
+
+inline glm::vec3 to_light(const Light& light) { return -light.direction; }
+
+// A whole scene. `objects` names the top-level objects (a JSON object, a glTF file, a built-in figure);
+// instances refer to them so per-caster techniques can treat each as one caster.
+struct Scene {
+  std::string name;
+  std::string description;
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Instance> instances;
+  std::vector<std::string> objects;
+  std::vector<Camera> cameras;   // the first is the default view
+  std::vector<Light> lights;
+  std::vector<std::string> warnings;  // repairs made while loading (e.g. non-finite normals replaced)
+  bool operator==(const Scene&) const = default;
+};
+
+}  // namespace scenes

@@ -1,0 +1,269 @@
+// Scene document -> Scene (see scene_build.h): walks the object hierarchy composing transforms and inherited
+// flags, generates or imports geometry, then fixes mirrored winding and completes cameras and lights.
+#include "scenes/scene_build.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <system_error>
+#include <map>
+
+#include "scenes/camera_math.h"
+#include "scenes/gltf_import.h"
+#include "scenes/mesh_ops.h"
+#include "scenes/primitives.h"
+#include "scenes/scene_error.h"
+#include "scenes/scene_json.h"
+#include "scenes/scene_queries.h"
+
+namespace scenes {
+namespace {
+
+// Why a file cannot be opened (worded like strerror), or nothing.
+std::optional<std::string> unreadable(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) return std::generic_category().message(ENOENT);
+  if (!std::filesystem::is_regular_file(status)) return std::string("not a regular file");
+  return std::nullopt;
+}
+
+// What a child inherits from its parent.
+struct Inherited {
+  glm::mat4 transform{1.0f};
+  std::optional<uint32_t> material;
+  bool casts = true;
+  bool receives = true;
+};
+
+class Builder {
+ public:
+  Builder(const SceneDesc& desc, const BuildContext& ctx) : desc_(desc), ctx_(ctx) {}
+
+  Scene run() {
+    out_.name = desc_.name;
+    out_.description = desc_.description;
+    for (const Material& m : desc_.materials) {
+      Material copy = m;
+      if (!copy.texture.empty()) copy.texture = resolve(copy.texture).generic_string();
+      material_index_[copy.name] = uint32_t(out_.materials.size());
+      out_.materials.push_back(copy);
+    }
+    for (size_t i = 0; i < desc_.objects.size(); ++i) {
+      const ObjectDesc& o = desc_.objects[i];
+      out_.objects.push_back(o.name.empty() ? "object " + std::to_string(i) : o.name);
+      add(o, Inherited{}, uint32_t(i), "objects[" + std::to_string(i) + "]");
+    }
+    if (out_.instances.empty()) fail("objects", "the scene has no triangles");
+    flip_mirrored();
+    finish_cameras();
+    finish_lights();
+    return std::move(out_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+    throw SceneError(ctx_.file, key, message);
+  }
+
+  std::filesystem::path resolve(const std::string& path) const {
+    const std::filesystem::path p(path);
+    return (p.is_absolute() || ctx_.base_dir.empty() ? p : ctx_.base_dir / p).lexically_normal();
+  }
+
+  uint32_t default_material() {
+    if (!default_material_) {
+      default_material_ = uint32_t(out_.materials.size());
+      out_.materials.push_back(Material{});
+    }
+    return *default_material_;
+  }
+
+  void add(const ObjectDesc& o, const Inherited& parent, uint32_t object, const std::string& key) {
+    Inherited here = parent;
+    here.transform = parent.transform * transform_matrix(o.transform);
+    if (o.material) {
+      const auto it = material_index_.find(*o.material);
+      if (it == material_index_.end()) fail(key + ".material", "unknown material '" + *o.material + "'");
+      here.material = it->second;
+    }
+    here.casts = o.casts_shadows.value_or(parent.casts);
+    here.receives = o.receives_shadows.value_or(parent.receives);
+    const std::string name = o.name.empty() ? out_.objects[object] : o.name;
+
+    if (const auto* shape = std::get_if<Shape>(&o.source)) {
+      if (auto problem = check_shape(*shape)) {
+        const size_t colon = problem->find(": ");
+        fail(key + ".primitive." + problem->substr(0, colon), problem->substr(colon + 2));
+      }
+      add_instance(name, shape_mesh(*shape), here, object);
+    } else if (const auto* mesh = std::get_if<Mesh>(&o.source)) {
+      if (auto problem = mesh_problem(*mesh)) fail(key + ".mesh", *problem);
+      Mesh m = *mesh;
+      if (m.name.empty()) m.name = name;
+      if (const size_t fixed = repair_normals(m))
+        out_.warnings.push_back(ctx_.file + ": " + key + ".mesh: " + std::to_string(fixed) + " normals replaced");
+      out_.meshes.push_back(std::move(m));
+      add_instance(name, uint32_t(out_.meshes.size() - 1), here, object);
+    } else if (const auto* ref = std::get_if<GltfRef>(&o.source)) {
+      add_gltf(*ref, here, object, name, key + ".gltf");
+    }
+    for (size_t c = 0; c < o.children.size(); ++c)
+      add(o.children[c], here, object, key + ".children[" + std::to_string(c) + "]");
+  }
+
+  uint32_t shape_mesh(const Shape& shape) {
+    for (const auto& [s, index] : shapes_)
+      if (s == shape) return index;
+    out_.meshes.push_back(make_shape_mesh(shape));
+    shapes_.emplace_back(shape, uint32_t(out_.meshes.size() - 1));
+    return shapes_.back().second;
+  }
+
+  void add_instance(const std::string& name, uint32_t mesh, const Inherited& h, uint32_t object) {
+    Instance inst;
+    inst.name = name;
+    inst.mesh = mesh;
+    inst.material = h.material ? *h.material : default_material();
+    inst.object = object;
+    inst.transform = h.transform;
+    inst.casts_shadows = h.casts;
+    inst.receives_shadows = h.receives;
+    out_.instances.push_back(inst);
+  }
+
+  // Appends a glTF file's meshes (once per file), materials and instances, and its cameras and lights if asked.
+  void add_gltf(const GltfRef& ref, const Inherited& h, uint32_t object, const std::string& name,
+                const std::string& key) {
+    const std::filesystem::path path = resolve(ref.path);
+    if (auto problem = unreadable(path)) fail(key, "cannot open '" + path.generic_string() + "' (" + *problem + ")");
+    const std::string label = path.generic_string();
+    auto it = gltf_.find(label);
+    if (it == gltf_.end()) {
+      Scene file = import_gltf(path, label);
+      Imported imp;
+      imp.mesh_base = uint32_t(out_.meshes.size());
+      imp.material_base = uint32_t(out_.materials.size());
+      for (Mesh& m : file.meshes) out_.meshes.push_back(std::move(m));
+      for (Material& m : file.materials) out_.materials.push_back(std::move(m));
+      for (std::string& w : file.warnings) out_.warnings.push_back(std::move(w));
+      file.meshes.clear();
+      file.materials.clear();
+      imp.scene = std::move(file);
+      it = gltf_.emplace(label, std::move(imp)).first;
+    }
+    const Imported& imp = it->second;
+    for (const Instance& src : imp.scene.instances) {
+      Inherited inst_h = h;
+      inst_h.transform = h.transform * src.transform;
+      if (!h.material) inst_h.material = imp.material_base + src.material;
+      add_instance(src.name.empty() ? name : name + "/" + src.name, imp.mesh_base + src.mesh, inst_h, object);
+    }
+    const glm::mat3 linear(h.transform);
+    if (ref.import_cameras)
+      for (Camera c : imp.scene.cameras) {
+        c.position = glm::vec3(h.transform * glm::vec4(c.position, 1.0f));
+        c.target = glm::vec3(h.transform * glm::vec4(c.target, 1.0f));
+        c.up = glm::normalize(linear * c.up);
+        out_.cameras.push_back(c);
+      }
+    if (ref.import_lights)
+      for (Light l : imp.scene.lights) {
+        l.position = glm::vec3(h.transform * glm::vec4(l.position, 1.0f));
+        l.direction = linear * l.direction;
+        out_.lights.push_back(l);
+      }
+  }
+
+  // Mirroring transforms turn counter-clockwise triangles clockwise: give those instances a flipped mesh.
+  void flip_mirrored() {
+    std::map<uint32_t, uint32_t> flipped;
+    for (Instance& inst : out_.instances) {
+      if (glm::determinant(glm::mat3(inst.transform)) >= 0.0f) continue;
+      auto it = flipped.find(inst.mesh);
+      if (it == flipped.end()) {
+        Mesh m = out_.meshes[inst.mesh];
+        flip_winding(m);
+        m.name += " (mirrored)";
+        out_.meshes.push_back(std::move(m));
+        it = flipped.emplace(inst.mesh, uint32_t(out_.meshes.size() - 1)).first;
+      }
+      inst.mesh = it->second;
+    }
+  }
+
+  void finish_cameras() {
+    std::vector<Camera> cameras = desc_.cameras;
+    cameras.insert(cameras.end(), out_.cameras.begin(), out_.cameras.end());
+    for (size_t i = 0; i < desc_.cameras.size(); ++i)
+      if (auto problem = camera_problem(cameras[i]))
+        fail("cameras[" + std::to_string(i) + "]" + (problem->key.empty() ? "" : "." + problem->key), problem->message);
+    if (cameras.empty()) cameras.push_back(frame_camera(scene_bounds(out_)));
+    out_.cameras = std::move(cameras);
+  }
+
+  void finish_lights() {
+    std::vector<Light> lights = desc_.lights;
+    lights.insert(lights.end(), out_.lights.begin(), out_.lights.end());
+    for (size_t i = 0; i < desc_.lights.size(); ++i)
+      if (auto problem = light_problem(lights[i]))
+        fail("lights[" + std::to_string(i) + "]" + (problem->key.empty() ? "" : "." + problem->key), problem->message);
+    if (lights.empty()) {
+      Light sun;
+      sun.name = "default";
+      sun.direction = -glm::vec3(0.5f, 2.0f, 2.0f);
+      sun.shadow = default_shadow_settings(LightType::directional);
+      lights.push_back(sun);
+    }
+    const Aabb bounds = scene_bounds(out_);
+    for (Light& l : lights) {
+      if (glm::dot(l.direction, l.direction) > 0.0f) l.direction = glm::normalize(l.direction);
+      if (l.type != LightType::directional && l.range <= 0.0f) l.range = reach(l.position, bounds);
+    }
+    out_.lights = std::move(lights);
+  }
+
+  // Distance from p to the farthest corner of a box, a little more, at least a millimetre.
+  static float reach(const glm::vec3& p, const Aabb& b) {
+    const glm::vec3 far = glm::max(glm::abs(p - b.min), glm::abs(p - b.max));
+    return std::max(1.01f * glm::length(far), 1e-3f);
+  }
+
+  struct Imported {
+    Scene scene;  // instances, cameras and lights in the file's space; meshes and materials moved out
+    uint32_t mesh_base = 0, material_base = 0;
+  };
+
+  const SceneDesc& desc_;
+  const BuildContext& ctx_;
+  Scene out_;
+  std::map<std::string, uint32_t> material_index_;
+  std::optional<uint32_t> default_material_;
+  std::vector<std::pair<Shape, uint32_t>> shapes_;
+  std::map<std::string, Imported> gltf_;
+};
+
+bool is_gltf(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".gltf" || ext == ".glb";
+}
+
+}  // namespace
+
+Scene build_scene(const SceneDesc& desc, const BuildContext& context) { return Builder(desc, context).run(); }
+
+Scene load_scene(const std::filesystem::path& path) {
+  const BuildContext context{path.parent_path(), path.string()};
+  if (!is_gltf(path)) return build_scene(load_scene_desc(path), context);
+  if (auto problem = unreadable(path)) throw SceneError(path.string(), "", "cannot open file (" + *problem + ")");
+  SceneDesc desc;
+  desc.name = path.stem().string();
+  ObjectDesc model;
+  model.name = desc.name;
+  model.source = GltfRef{path.filename().string()};
+  desc.objects.push_back(model);
+  return build_scene(desc, context);
+}
+
+}  // namespace scenes

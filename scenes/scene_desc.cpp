@@ -1,0 +1,92 @@
+// Name tables of the scene document (primitives, room sides) and the transform rule T · R · S.
+#include "scenes/scene_desc.h"
+
+#include <array>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace scenes {
+namespace {
+
+constexpr std::array kPrimitives = {
+    NamedEntry{"plane", "XZ plane at y = 0 facing +Y: size [x, z], segments"},
+    NamedEntry{"box", "box centred on the origin: size [x, y, z]"},
+    NamedEntry{"sphere", "UV sphere centred on the origin: radius, segments, rings"},
+    NamedEntry{"cylinder", "cylinder along Y centred on the origin: radius, height, segments, caps"},
+    NamedEntry{"cone", "cone along Y centred on the origin, apex up: radius, height, segments, cap"},
+    NamedEntry{"room", "thick-walled room, floor at y = 0: size [x, y, z] inside, wall, sides"},
+    NamedEntry{"terrain", "sum-of-sines heightfield in XZ: size, resolution, amplitude, wavelength, seed"},
+};
+static_assert(kPrimitives.size() == std::variant_size_v<Shape>);
+
+constexpr std::array kRoomSides = {
+    NamedEntry{"floor", "slab under y = 0"},      NamedEntry{"ceiling", "slab over y = size.y"},
+    NamedEntry{"-x", "wall at x = -size.x / 2"},  NamedEntry{"+x", "wall at x = +size.x / 2"},
+    NamedEntry{"-z", "wall at z = -size.z / 2"},  NamedEntry{"+z", "wall at z = +size.z / 2"},
+};
+
+}  // namespace
+
+std::span<const NamedEntry> primitive_names() { return kPrimitives; }
+std::span<const NamedEntry> room_side_names() { return kRoomSides; }
+std::string_view shape_name(const Shape& shape) { return kPrimitives[shape.index()].name; }
+
+glm::mat4 transform_matrix(const TransformDesc& t) {
+  if (t.matrix) return *t.matrix;
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), t.translate);
+  if (t.quaternion) {
+    m = m * glm::mat4_cast(glm::normalize(*t.quaternion));
+  } else {
+    m = glm::rotate(m, glm::radians(t.rotate_deg.z), glm::vec3(0, 0, 1));
+    m = glm::rotate(m, glm::radians(t.rotate_deg.y), glm::vec3(0, 1, 0));
+    m = glm::rotate(m, glm::radians(t.rotate_deg.x), glm::vec3(1, 0, 0));
+  }
+  return glm::scale(m, t.scale);
+}
+
+std::optional<Problem> camera_problem(const Camera& c) {
+  const glm::vec3 forward = c.target - c.position;
+  if (!(glm::dot(forward, forward) > 0.0f)) return Problem{"target", "same as position"};
+  if (!(glm::length(glm::cross(glm::normalize(forward), c.up)) > 1e-6f))
+    return Problem{"up", "zero or parallel to the view direction"};
+  if (const auto* p = std::get_if<Perspective>(&c.projection)) {
+    if (!(p->fovy_deg > 0.0f && p->fovy_deg < 180.0f))
+      return Problem{"perspective.fovy", "must be between 0 and 180 degrees"};
+    if (p->aspect && !(*p->aspect > 0.0f)) return Problem{"perspective.aspect", "must be positive"};
+    if (!(p->near > 0.0f && p->near < p->far)) return Problem{"perspective", "needs 0 < near < far"};
+  } else {
+    const auto& o = std::get<Orthographic>(c.projection);
+    if (!(o.left < o.right && o.bottom < o.top)) return Problem{"orthographic", "needs left < right and bottom < top"};
+    if (!(o.near < o.far)) return Problem{"orthographic", "needs near < far"};
+  }
+  return std::nullopt;
+}
+
+std::optional<Problem> light_problem(const Light& l) {
+  if (l.type != LightType::point && !(glm::dot(l.direction, l.direction) > 0.0f))
+    return Problem{"direction", "must not be zero"};
+  if (!(l.inner_cone_deg >= 0.0f && l.inner_cone_deg <= l.outer_cone_deg && l.outer_cone_deg < 90.0f))
+    return Problem{"", "needs 0 <= inner_cone <= outer_cone < 90 degrees"};
+  if (!(l.range >= 0.0f)) return Problem{"range", "must not be negative"};
+  if (!technique_supports(l.shadow.technique, l.type)) {
+    std::string ok;
+    for (const NamedEntry& e : technique_names()) {
+      if (!technique_supports(*parse_technique(e.name), l.type)) continue;
+      if (!ok.empty()) ok += ", ";
+      ok += e.name;
+    }
+    std::string message = "'";
+    message += to_string(l.shadow.technique);
+    message += "' cannot serve a ";
+    message += to_string(l.type);
+    message += " light (use: " + ok + ")";
+    return Problem{"shadow.technique", message};
+  }
+  const ShadowSettings& s = l.shadow;
+  if (s.map_size < 1 || s.map_size > 16384) return Problem{"shadow.map_size", "must be between 1 and 16384"};
+  if (s.poisson_taps != 4 && s.poisson_taps != 16) return Problem{"shadow.poisson_taps", "expected 4 or 16"};
+  if (!(s.poisson_spread > 0.0f)) return Problem{"shadow.poisson_spread", "must be positive"};
+  return std::nullopt;
+}
+
+}  // namespace scenes

@@ -1,0 +1,86 @@
+// Bounds, triangle counts and world-space triangle soup of a built scene (see scene_queries.h).
+#include "scenes/scene_queries.h"
+
+namespace scenes {
+namespace {
+
+glm::vec3 transform_point(const glm::mat4& m, const glm::vec3& p) {
+  return glm::vec3(m[0]) * p.x + glm::vec3(m[1]) * p.y + glm::vec3(m[2]) * p.z + glm::vec3(m[3]);
+}
+
+void append(TriangleSoup& soup, const Scene& scene, const Instance& inst) {
+  const Mesh& mesh = scene.meshes[inst.mesh];
+  const uint32_t base = uint32_t(soup.positions.size());
+  soup.positions.reserve(soup.positions.size() + mesh.positions.size());
+  for (const glm::vec3& p : mesh.positions) soup.positions.push_back(transform_point(inst.transform, p));
+  soup.indices.reserve(soup.indices.size() + mesh.indices.size());
+  for (uint32_t i : mesh.indices) soup.indices.push_back(base + i);
+}
+
+}  // namespace
+
+bool passes(const Instance& instance, InstanceFilter filter) {
+  switch (filter) {
+    case InstanceFilter::all: return true;
+    case InstanceFilter::casters: return instance.casts_shadows;
+    case InstanceFilter::receivers: return instance.receives_shadows;
+  }
+  return true;
+}
+
+Aabb mesh_bounds(const Mesh& mesh) {
+  Aabb box;
+  for (const glm::vec3& p : mesh.positions) box.extend(p);
+  return box;
+}
+
+Aabb instance_bounds(const Scene& scene, size_t instance) {
+  const Instance& inst = scene.instances[instance];
+  const Mesh& mesh = scene.meshes[inst.mesh];
+  Aabb box;
+  for (const glm::vec3& p : mesh.positions) box.extend(transform_point(inst.transform, p));
+  return box;
+}
+
+Aabb object_bounds(const Scene& scene, uint32_t object) {
+  Aabb box;
+  for (size_t i = 0; i < scene.instances.size(); ++i)
+    if (scene.instances[i].object == object) box.extend(instance_bounds(scene, i));
+  return box;
+}
+
+Aabb scene_bounds(const Scene& scene, InstanceFilter filter) {
+  Aabb box;
+  for (size_t i = 0; i < scene.instances.size(); ++i)
+    if (passes(scene.instances[i], filter)) box.extend(instance_bounds(scene, i));
+  return box;
+}
+
+std::vector<uint32_t> object_instances(const Scene& scene, uint32_t object) {
+  std::vector<uint32_t> out;
+  for (size_t i = 0; i < scene.instances.size(); ++i)
+    if (scene.instances[i].object == object) out.push_back(uint32_t(i));
+  return out;
+}
+
+size_t triangle_count(const Scene& scene, InstanceFilter filter) {
+  size_t n = 0;
+  for (const Instance& inst : scene.instances)
+    if (passes(inst, filter)) n += scene.meshes[inst.mesh].triangle_count();
+  return n;
+}
+
+TriangleSoup flatten(const Scene& scene, InstanceFilter filter) {
+  TriangleSoup soup;
+  for (const Instance& inst : scene.instances)
+    if (passes(inst, filter)) append(soup, scene, inst);
+  return soup;
+}
+
+TriangleSoup flatten_instances(const Scene& scene, std::span<const uint32_t> instances) {
+  TriangleSoup soup;
+  for (uint32_t i : instances) append(soup, scene, scene.instances[i]);
+  return soup;
+}
+
+}  // namespace scenes

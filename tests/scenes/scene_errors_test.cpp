@@ -1,0 +1,216 @@
+// Bad input of every kind ends in a SceneError whose what() is exactly `WHERE: what is wrong`, WHERE being the
+// file and, where there is one, the key path inside it: missing files, malformed JSON and glTF (truncated, a GLB
+// header that lies about its length), unknown names, wrong types, unknown keys, non-finite data, empty meshes.
+#include <fstream>
+#include <limits>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "scenes/builtin_scenes.h"
+#include "scenes/gltf_import.h"
+#include "scenes/scene_build.h"
+#include "scenes/scene_error.h"
+#include "scenes/scene_json.h"
+#include "tests/scenes/gltf_fixture.h"
+#include "tests/support.h"
+
+namespace {
+
+// The message a call throws, or "" when it does not throw.
+template <typename F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const scenes::SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string json_error(const std::string& text) {
+  return error_of([&] { scenes::build_scene(scenes::parse_scene_json(text, "scene.json"), {{}, "scene.json"}); });
+}
+
+const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+
+TEST(SceneErrors, MissingFiles) {
+  EXPECT_EQ(error_of([] { scenes::load_scene("no/such/scene.json"); }),
+            "no/such/scene.json: cannot open file (No such file or directory)");
+  EXPECT_EQ(error_of([] { scenes::load_scene("no/such/model.glb"); }),
+            "no/such/model.glb: cannot open file (No such file or directory)");
+  EXPECT_EQ(error_of([] { scenes::import_gltf("no/such/model.gltf"); }),
+            "no/such/model.gltf: cannot open file (No such file or directory)");
+  EXPECT_EQ(error_of([] {
+              scenes::build_scene(scenes::parse_scene_json(R"({"objects": [{}, {"gltf": "models/x.glb"}]})", "s.json"),
+                                  {"base", "s.json"});
+            }),
+            "s.json: objects[1].gltf: cannot open 'base/models/x.glb' (No such file or directory)");
+}
+
+TEST(SceneErrors, MalformedJson) {
+  EXPECT_EQ(json_error(R"({"objects": [)"),
+            "scene.json: malformed JSON: parse error at line 1, column 14: syntax error while parsing value - "
+            "unexpected end of input; expected '[', '{', or a literal");
+  EXPECT_EQ(json_error("[1, 2]"), "scene.json: expected an object");
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box", "size": [1, 1, 1e39]}}]})"),
+            "scene.json: objects[0].primitive.size[2]: expected a finite number that fits in a float");
+}
+
+TEST(SceneErrors, WrongTypesAndUnknownKeys) {
+  EXPECT_EQ(json_error(R"({"objects": [{}, {}, {"transform": {"scale": [1, 2]}}]})"),
+            "scene.json: objects[2].transform.scale: expected an array of 3 numbers");
+  EXPECT_EQ(json_error(R"({"objects": [{"colour": [1, 0, 0]}]})"), "scene.json: objects[0].colour: unknown key");
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "sphere", "size": 2}}]})"),
+            "scene.json: objects[0].primitive.size: unknown key (sphere primitive)");
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "sphere", "radius": "big"}}]})"),
+            "scene.json: objects[0].primitive.radius: expected a number");
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "sphere", "radius": -1}}]})"),
+            "scene.json: objects[0].primitive.radius: must be positive");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "direction": [0, -1, 0]}]})"),
+            "scene.json: lights[0].direction: unknown key (point light)");
+  EXPECT_EQ(json_error(R"({"objects": [{"casts_shadows": 1}]})"),
+            "scene.json: objects[0].casts_shadows: expected true or false");
+  EXPECT_EQ(json_error(R"({"objects": [{"transform": {"matrix": [1, 0, 0], "translate": [1, 2, 3]}}]})"),
+            "scene.json: objects[0].transform.matrix: cannot be combined with translate");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "spot", "inner_cone": 40, "outer_cone": 30}]})"),
+            "scene.json: lights[0]: needs 0 <= inner_cone <= outer_cone < 90 degrees");
+  EXPECT_EQ(json_error(R"({"cameras": [{"position": [0, 0, 1], "target": [0, 0, 1]}]})"),
+            "scene.json: cameras[0].target: same as position");
+  EXPECT_EQ(json_error(R"({"version": 2})"), "scene.json: version: unsupported version (this reader knows version 1)");
+}
+
+TEST(SceneErrors, UnknownNames) {
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "pyramid"}}]})"),
+            "scene.json: objects[0].primitive.type: unknown primitive 'pyramid' (known: plane, box, sphere, "
+            "cylinder, cone, room, terrain)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "area"}]})"),
+            "scene.json: lights[0].type: unknown light type 'area' (known: directional, spot, point, hemispherical)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"technique": "raytraced"}}]})"),
+            "scene.json: lights[0].shadow.technique: unknown technique 'raytraced' (known: none, shadowmap, cube, "
+            "paraboloid, pyramid, projective, cascades, lispsm, frustum-faces)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"filter": "vsm"}}]})"),
+            "scene.json: lights[0].shadow.filter: unknown filter 'vsm' (known: hard, pcf, poisson, stratified, "
+            "rotated, early-bail)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"depth_format": "d8"}}]})"),
+            "scene.json: lights[0].shadow.depth_format: unknown depth format 'd8' (known: d16, d24, d32f)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"bias": {"mode": "huge"}}}]})"),
+            "scene.json: lights[0].shadow.bias.mode: unknown bias mode 'huge' (known: none, constant, slope, offset, "
+            "normal)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"technique": "cube"}}]})"),
+            "scene.json: lights[0].shadow.technique: 'cube' cannot serve a directional light (use: none, shadowmap, "
+            "projective, cascades, lispsm, frustum-faces)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "shadow": {"poisson_taps": 8}}]})"),
+            "scene.json: lights[0].shadow.poisson_taps: expected 4 or 16");
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"}, "material": "gold"}]})"),
+            "scene.json: objects[0].material: unknown material 'gold'");
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "room", "sides": ["floor", "roof"]}}]})"),
+            "scene.json: objects[0].primitive.sides[1]: unknown room side 'roof' (known: floor, ceiling, -x, +x, "
+            "-z, +z)");
+  EXPECT_EQ(error_of([] { scenes::builtin_scene("teapot"); }),
+            "teapot: unknown built-in scene (known: tutorial, tutorial-spot, pyramid, paraboloid, projective, duel)");
+}
+
+TEST(SceneErrors, EmptyAndBrokenMeshes) {
+  EXPECT_EQ(json_error(R"({"objects": [{"mesh": {"positions": [], "indices": []}}]})"),
+            "scene.json: objects[0].mesh: empty mesh (no triangles)");
+  EXPECT_EQ(json_error(R"({"objects": [{"mesh": {"positions": [0, 0, 0, 1, 0, 0, 0, 1], "indices": [0, 1, 2]}}]})"),
+            "scene.json: objects[0].mesh.positions: expected a flat array of numbers, 3 per vertex");
+  EXPECT_EQ(json_error(R"({"objects": [{"mesh": {"positions": [0, 0, 0, 1, 0, 0, 0, 1, 0], "indices": [0, 1, 5]}}]})"),
+            "scene.json: objects[0].mesh: index 2 is 5, out of range for 3 vertices");
+  EXPECT_EQ(json_error(R"({"objects": []})"), "scene.json: objects: the scene has no triangles");
+  EXPECT_EQ(json_error("{}"), "scene.json: objects: the scene has no triangles");
+}
+
+TEST(SceneErrors, BrokenGltf) {
+  const auto dir = testsupport::temp_dir("scene_errors_gltf");
+  const std::string d = dir.generic_string();
+  {
+    testsupport::GltfFixture f;  // NaN position
+    std::vector<glm::vec3> p = kTriangle;
+    p[1].x = std::numeric_limits<float>::quiet_NaN();
+    f.node({{"mesh", f.mesh(f.positions(p))}});
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "nan")); }),
+              d + "/nan.gltf: meshes[0].primitives[0]: vertex 1 has a non-finite position");
+  }
+  {
+    testsupport::GltfFixture f;  // infinite position, in a GLB
+    std::vector<glm::vec3> p = kTriangle;
+    p[2].z = std::numeric_limits<float>::infinity();
+    f.node({{"mesh", f.mesh(f.positions(p))}});
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_glb(dir, "inf")); }),
+              d + "/inf.glb: meshes[0].primitives[0]: vertex 2 has a non-finite position");
+  }
+  {
+    testsupport::GltfFixture f;  // empty primitive (the buffer itself is not empty)
+    f.positions(kTriangle);
+    f.node({{"mesh", f.mesh(f.positions({}))}});
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "empty")); }),
+              d + "/empty.gltf: meshes[0].primitives[0]: empty mesh (no triangles)");
+  }
+  {
+    testsupport::GltfFixture f;  // index out of range, accessor past the end of its buffer view
+    const int positions = f.positions(kTriangle);
+    f.node({{"mesh", f.mesh(positions, f.indices({0, 1, 7}))}});
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "index")); }),
+              d + "/index.gltf: meshes[0].primitives[0]: index 2 is 7, out of range for 3 vertices");
+    f.doc["accessors"][0]["count"] = 4;
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "overrun")); }),
+              d + "/overrun.gltf: meshes[0].primitives[0].attributes.POSITION (accessors[0]): 4 elements at offset 0 "
+                  "run past the end of bufferViews[0] (36 bytes)");
+  }
+  {
+    testsupport::GltfFixture f;  // a node that is its own grandchild
+    const int a = f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
+    const int b = f.node({{"children", {a}}}, false);
+    f.doc["nodes"][a]["children"] = {b};
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "cycle")); }),
+              d + "/cycle.gltf: nodes[1]: the node hierarchy has a cycle");
+  }
+  {
+    testsupport::GltfFixture f;  // compressed geometry
+    f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
+    f.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    f.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "draco")); }),
+              d + "/draco.gltf: extensionsRequired: 'KHR_draco_mesh_compression' is not supported");
+  }
+  testsupport::GltfFixture f;
+  f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
+  // Truncated glTF JSON.
+  const auto gltf = f.write_gltf(dir, "good");
+  std::ifstream in(gltf);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ofstream(dir / "truncated.gltf") << text.substr(0, text.size() / 2);
+  EXPECT_THAT(error_of([&] { scenes::load_scene(dir / "truncated.gltf"); }),
+              testing::StartsWith(d + "/truncated.gltf: malformed glTF: parse error at line "));
+  // A GLB whose header claims more bytes than the file has, and one cut short.
+  std::vector<uint8_t> glb = f.glb_bytes();
+  std::vector<uint8_t> lying = glb;
+  lying[8] = uint8_t(lying[8] + 64);
+  testsupport::GltfFixture::write_bytes(dir / "lying.glb", lying);
+  EXPECT_EQ(error_of([&] { scenes::load_scene(dir / "lying.glb"); }),
+            d + "/lying.glb: malformed GLB: Invalid glTF binary.");
+  glb.resize(glb.size() - 8);
+  testsupport::GltfFixture::write_bytes(dir / "cut.glb", glb);
+  EXPECT_EQ(error_of([&] { scenes::load_scene(dir / "cut.glb"); }),
+            d + "/cut.glb: malformed GLB: Invalid glTF binary.");
+  // Not a glTF at all.
+  std::ofstream(dir / "garbage.glb") << "hello";
+  EXPECT_EQ(error_of([&] { scenes::load_scene(dir / "garbage.glb"); }),
+            d + "/garbage.glb: malformed glTF: parse error at line 1, column 1: syntax error while parsing value - "
+                "invalid literal; last read: 'h'");
+}
+
+TEST(SceneErrors, ErrorsCarryTheirParts) {
+  try {
+    scenes::parse_scene_json(R"({"objects": [{"transform": {"scale": "big"}}]})", "parts.json");
+    FAIL() << "no error";
+  } catch (const scenes::SceneError& e) {
+    EXPECT_EQ(e.file(), "parts.json");
+    EXPECT_EQ(e.key_path(), "objects[0].transform.scale");
+    EXPECT_EQ(e.message(), "expected an array of 3 numbers");
+  }
+}
+
+}  // namespace
