@@ -24,12 +24,21 @@ struct ChunkBins {
   std::vector<TriangleSetup> binned;   // copies grouped by tile
   std::vector<uint32_t> offsets;       // tile k's commands: binned[offsets[k] .. offsets[k + 1])
 
-  void clear() { setups.clear(); }
-
-  // Sorts `setups` into per-tile slices (a counting sort: count, prefix sum, scatter).
-  void bin(const TileGrid& grid) {
+  // Starts a draw: no setups, every tile's count at zero.
+  void reset(const TileGrid& grid) {
+    setups.clear();
     offsets.assign(size_t(grid.count()) + 1, 0u);
-    for (const TriangleSetup& t : setups) for_each_tile(t, grid, [&](int k) { ++offsets[size_t(k) + 1]; });
+  }
+
+  // Appends a set-up triangle and counts it in every tile its box touches.
+  void add(const TriangleSetup& t, const TileGrid& grid) {
+    setups.push_back(t);
+    for_each_tile(t, grid, [&](int k) { ++offsets[size_t(k) + 1]; });
+  }
+
+  // Sorts `setups` into per-tile slices (counting sort: the counts were taken by add(), then a prefix sum and
+  // one scatter pass).
+  void bin(const TileGrid& grid) {
     for (size_t k = 1; k < offsets.size(); ++k) offsets[k] += offsets[k - 1];
     binned.resize(offsets.back());
     std::vector<uint32_t>& cursor = scratch_;

@@ -11,23 +11,24 @@
 namespace raster {
 
 // Depth of the eight pixels (bx + l, y) on the triangle's plane, clamped to [0, 1]. Shared by every back end so
-// that a triangle gets the same depth whichever path draws it.
-// The depth is z_ref + dzdx·(x − min_x) + dzdy·(y − min_y), evaluated as two fused multiply-adds: first the
-// column part for eight pixels, then the row part.
+// that a triangle gets the same depth whichever path draws it. llvmpipe's operation order (setup.cpp): with x and
+// y the absolute pixel indices as floats, z = fma(dzdy, y, fma(dzdx, x, z_a0)) + z_offset, then the clamp. The
+// column part (first fused multiply-add) is computed once per segment, the rest per row.
 inline simd::VecF32 plane_depth_columns(const TriangleSetup& t, int32_t bx) {
   using simd::VecF32;
-  const VecF32 dx = VecF32::splat(float(bx - t.min_x)) + VecF32::iota();
-  return simd::fma(VecF32::splat(t.dzdx), dx, VecF32::splat(t.z_ref));
+  const VecF32 x = VecF32::splat(float(bx)) + VecF32::iota();  // exact: pixel indices are below 2^24
+  return simd::fma(VecF32::splat(t.dzdx), x, VecF32::splat(t.z_a0));
 }
 
-inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, int32_t dy) {
+inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, simd::VecF32 z_offset, int32_t y) {
   using simd::VecF32;
-  const VecF32 z = simd::fma(dzdy, VecF32::splat(float(dy)), zcol);
+  const VecF32 z = simd::fma(dzdy, VecF32::splat(float(y)), zcol) + z_offset;
   return simd::min(simd::max(z, VecF32::splat(0.0f)), VecF32::splat(1.0f));
 }
 
 inline simd::VecF32 plane_depth_row(const TriangleSetup& t, int32_t bx, int32_t y) {
-  return plane_depth_clamped(plane_depth_columns(t, bx), simd::VecF32::splat(t.dzdy), y - t.min_y);
+  using simd::VecF32;
+  return plane_depth_clamped(plane_depth_columns(t, bx), VecF32::splat(t.dzdy), VecF32::splat(t.z_offset), y);
 }
 
 template <DepthFormat Format, DepthFunc Func, bool Write>
@@ -42,7 +43,8 @@ struct DepthOnlyStage {
   [[gnu::always_inline]] void row(const TriangleSetup& t, simd::VecF32 zcol, int32_t x, int32_t y,
                                   simd::Mask covered) const {
     auto* p = depth->row<typename Traits::Storage>(y) + x;
-    const auto frag = Traits::from_depth(plane_depth_clamped(zcol, simd::VecF32::splat(t.dzdy), y - t.min_y));
+    const auto frag = Traits::from_depth(
+        plane_depth_clamped(zcol, simd::VecF32::splat(t.dzdy), simd::VecF32::splat(t.z_offset), y));
     const auto stored = Traits::load(p);
     const simd::Mask pass = depth_compare<Func>(frag, stored) & covered;
     if constexpr (Write) Traits::store(p, simd::select(pass, stored, frag));

@@ -14,10 +14,13 @@ inline constexpr int32_t kSubpixelScale = 1 << kSubpixelBits;
 // Largest render target side. 16384 = 2^14 pixels; a d32f target of that size is 1 GiB.
 inline constexpr int kMaxTargetSize = 16384;
 
-// Guard band: after clipping, every window-space x and y lies within [-kGuardBand, kGuardBand] pixels. The
-// clipper cuts against kGuardBandClip (a little inside), so float rounding of clipped vertices cannot leave it.
-inline constexpr int kGuardBand = 1 << 15;  // 32768 px = 2^23 sub-pixel units
-inline constexpr float kGuardBandClip = 32000.0f;
+// Window-space bound: every vertex that reaches setup lies within [-kGuardBand, kGuardBand] pixels. Triangles
+// are clipped to the view frustum in x and y as llvmpipe does (clip.h; no guard band), so vertices lie in the
+// viewport up to float rounding, and the viewport is bounded as in GL (setup.cpp, make_setup_params: origin in
+// [kViewportMin, kViewportMax], size at most kMaxTargetSize, GL_MAX_VIEWPORT_DIMS of llvmpipe), so its far
+// corner is below kViewportMax + kMaxTargetSize = 49151 < 2^16; the margin (16384 px) dwarfs any rounding.
+inline constexpr int kViewportMin = -32768, kViewportMax = 32767;  // GL_VIEWPORT_BOUNDS_RANGE
+inline constexpr int kGuardBand = 1 << 16;  // 65536 px = 2^24 sub-pixel units
 
 // Tiles and blocks. A tile is the unit of binning and of work for one thread; a block is the unit of the
 // hierarchical accept/reject test and of SIMD work (one 8-wide row of pixels per vector).
@@ -27,22 +30,23 @@ inline constexpr int kBlockSizeLog2 = 3;
 inline constexpr int kBlockSize = 1 << kBlockSizeLog2;  // 8 × 8 pixels
 
 // ---- Derivation of the fixed-point ranges -------------------------------------------------------------------
-// Snapped coordinates X, Y (sub-pixel units) satisfy |X|, |Y| <= 2^23 (guard band).
-inline constexpr int64_t kMaxCoord = int64_t(kGuardBand) << kSubpixelBits;  // 2^23
-// Edge coefficients A = Y_a - Y_b and B = X_b - X_a: |A|, |B| <= 2^24, so they are stored as int32.
-inline constexpr int64_t kMaxEdgeCoef = 2 * kMaxCoord;  // 2^24
+// Snapped coordinates X, Y (sub-pixel units) satisfy |X|, |Y| <= 2^24 (window-space bound).
+inline constexpr int64_t kMaxCoord = int64_t(kGuardBand) << kSubpixelBits;  // 2^24
+static_assert(-int64_t(kViewportMin) <= kGuardBand && kViewportMax + int64_t(kMaxTargetSize) < kGuardBand);
+// Edge coefficients A = Y_a - Y_b and B = X_b - X_a: |A|, |B| <= 2^25, so they are stored as int32.
+inline constexpr int64_t kMaxEdgeCoef = 2 * kMaxCoord;  // 2^25
 static_assert(kMaxEdgeCoef <= std::numeric_limits<int32_t>::max());
 // The edge function at a sample S, E(S) = A·(S.x − X_a) + B·(S.y − Y_a), is a sum of two products of values
-// bounded by 2^24 and 2^24 + 2^22 (sample positions lie within the target, inside the guard band):
-// |E| < 2^50, computed in int64.
+// bounded by 2^25 and 2^25 + 2^22 (sample positions lie within the target, inside the window-space bound):
+// |E| < 2^52, computed in int64.
 static_assert(2.0 * double(kMaxEdgeCoef) * double(2 * kMaxCoord + (int64_t(kMaxTargetSize) << kSubpixelBits)) <
               double(std::numeric_limits<int64_t>::max()));
 // Samples sit at pixel centres, S = 256·(i, j) + 128, so E(i, j) = 256·(A·i + B·j) + C. The inside test
-// E >= 0 (after the tie-rule bias) is then exactly  A·i + B·j >= T  with T = ceil(−C / 256), |T| < 2^43.
+// E >= 0 (after the tie-rule bias) is then exactly  A·i + B·j >= T  with T = ceil(−C / 256), |T| < 2^45.
 // Within one 8 × 8 block starting at (bi, bj), F(i, j) = A·i + B·j − T = F0 + A·di + B·dj with 0 <= di, dj < 8.
-// The offset part is bounded by 2 · 7 · 2^24 < 2^28. A block is rasterized per pixel only when the edge
-// crosses it, i.e. when F0 + min offset < 0 <= F0 + max offset, so then |F0| < 2^28 and every per-pixel value
-// satisfies |F| < 2^29: per-pixel edge arithmetic is int32, eight lanes to a vector.
+// The offset part is bounded by 2 · 7 · 2^25 < 2^29. A block is rasterized per pixel only when the edge
+// crosses it, i.e. when F0 + min offset < 0 <= F0 + max offset, so then |F0| < 2^29 and every per-pixel value
+// satisfies |F| < 2^30: per-pixel edge arithmetic is int32, eight lanes to a vector.
 inline constexpr int64_t kMaxBlockOffset = 2 * (kBlockSize - 1) * kMaxEdgeCoef;
 static_assert(2 * kMaxBlockOffset < (int64_t(1) << 31), "per-pixel edge values must fit int32");
 // The viewport origin and size are bounded so that pixel indices and tile counts fit comfortably.

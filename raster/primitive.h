@@ -26,11 +26,14 @@ struct alignas(16) TriangleSetup {
   int64_t t[3];
   int32_t a[3], b[3];
   int32_t min_x, min_y, max_x, max_y;
-  float z_ref;       // depth (with polygon offset) at the centre of pixel (min_x, min_y)
+  // Depth plane as llvmpipe evaluates it (setup.cpp): z(x, y) = fma(dzdy, y, fma(dzdx, x, z_a0)) + z_offset at
+  // pixel (x, y), with x and y the pixel indices as floats, then clamped to [0, 1].
+  float z_a0;        // the plane at the centre of pixel (0, 0), without polygon offset
   float dzdx, dzdy;  // window-space depth slopes
+  float z_offset;    // polygon offset (0 when the draw has none)
   uint32_t prim;     // shaded draws: index of the triangle's interpolation record; bit 31: back-facing
 };
-static_assert(sizeof(TriangleSetup) == 80);
+static_assert(sizeof(TriangleSetup) == 96);
 
 inline constexpr uint32_t kBackFacingBit = 0x80000000u;
 

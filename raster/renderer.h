@@ -17,6 +17,7 @@
 #include "raster/draw_stats.h"
 #include "raster/fragment_stage.h"
 #include "raster/interpolation.h"
+#include "raster/outcode.h"
 #include "raster/scratch.h"
 #include "raster/setup.h"
 #include "raster/shader.h"
@@ -99,6 +100,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   CV* post = post_.get<CV>(nv);
   WindowVertex* win = win_.get<WindowVertex>(nv);
   unsigned* codes = codes_.get<unsigned>(nv);
+  const OutcodeTester outcode_of(planes);
   pool_.parallel_for((nv + detail::kVertexBatch - 1) / detail::kVertexBatch, [&](size_t b) {
     const size_t end = std::min(nv, (b + 1) * detail::kVertexBatch);
     for (size_t i = b * detail::kVertexBatch; i < end; ++i) {
@@ -106,7 +108,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       cv.pos = shader.vertex(vertices[i], cv.var);
       const glm::vec4& p = cv.pos;
       const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
-      codes[i] = finite ? outcode(planes, p) : detail::kInvalidVertex;
+      codes[i] = finite ? outcode_of(p) : detail::kInvalidVertex;
       if (codes[i] == 0) win[i] = to_window(p, sp);
     }
   });
@@ -117,7 +119,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   while (chunks_.size() < nchunks) chunks_.push_back(std::make_unique<Chunk>());
   pool_.parallel_for(nchunks, [&](size_t c) {
     Chunk& ch = *chunks_[c];
-    ch.bins.clear();
+    ch.bins.reset(grid);
     ch.interp_count = 0;
     ch.stats = DrawStats{};
     const size_t end = std::min(ntri, (c + 1) * detail::kChunkTriangles);
@@ -135,7 +137,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
         ch.interp_count = ch.interps.append(ch.interp_count, make_interp<V>(w, var));
       }
       ++ch.stats.setups;
-      ch.bins.setups.push_back(t);
+      ch.bins.add(t, grid);
     };
     for (size_t i = c * detail::kChunkTriangles; i < end; ++i) {
       uint32_t idx[3];
@@ -159,16 +161,16 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       }
       ++ch.stats.clipped;
       std::array<CV, 12> poly;
-      const int n = clip_polygon(planes, c0 | c1 | c2, poly, post[idx[0]], post[idx[1]], post[idx[2]]);
+      std::array<WindowVertex, 12> pw;
+      const int n = clip_to_window(planes, c0 | c1 | c2, sp, poly, pw, post[idx[0]], post[idx[1]], post[idx[2]]);
       if (n < 3) {
         ++ch.stats.rejected;
         continue;
       }
-      std::array<WindowVertex, 12> pw;
-      for (int k = 0; k < n; ++k) pw[k] = to_window(poly[k].pos, sp);
       for (int k = 1; k + 1 < n; ++k) {
-        const WindowVertex* w[3] = {&pw[0], &pw[k], &pw[k + 1]};
-        const V* var[3] = {&poly[0].var, &poly[k].var, &poly[k + 1].var};
+        const auto f = clip_fan(k);  // llvmpipe's fan order: (p[k], p[k+1], p[0])
+        const WindowVertex* w[3] = {&pw[f[0]], &pw[f[1]], &pw[f[2]]};
+        const V* var[3] = {&poly[f[0]].var, &poly[f[1]].var, &poly[f[2]].var};
         emit(w, var);
       }
     }

@@ -89,7 +89,8 @@ TEST(Clip, FarPlaneCutsUnlessDepthClamp) {
   }
 }
 
-TEST(Clip, HugeCoordinatesUseTheGuardBand) {
+// Coordinates far beyond the fixed-point range are clipped to the view frustum in x and y (as llvmpipe does).
+TEST(Clip, HugeCoordinatesAreClippedToTheFrustum) {
   Renderer r(testsupport::test_threads());
   // A triangle far larger than the fixed-point range that still covers the whole viewport.
   const int W = 80, H = 60;
