@@ -1,0 +1,86 @@
+// Reading an image through OpenImageIO into an owned Texture2D.
+#include "scenes/io/material_texture.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "scenes/io/io_error.h"
+
+namespace scenes::io {
+
+namespace {
+
+// Expands n channels (1..4) to RGBA: grey, grey + alpha, RGB, RGBA.
+template <class T>
+void expand(const T* p, int n, T one, T out[4]) {
+  switch (n) {
+    case 1: out[0] = out[1] = out[2] = p[0], out[3] = one; break;
+    case 2: out[0] = out[1] = out[2] = p[0], out[3] = p[1]; break;
+    case 3: out[0] = p[0], out[1] = p[1], out[2] = p[2], out[3] = one; break;
+    default: out[0] = p[0], out[1] = p[1], out[2] = p[2], out[3] = p[3]; break;
+  }
+}
+
+}  // namespace
+
+shading::Texture2D load_texture(const std::filesystem::path& path, const TextureLoadOptions& options) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw IoError(path, "no such file");
+  // Straight alpha, as GL texture data is: by default OpenImageIO would premultiply colour by alpha.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path.string(), &config);
+  if (!in) throw IoError(path, "cannot read the image: " + OIIO::geterror());
+  const OIIO::ImageSpec spec = in->spec();
+  const int w = spec.width, h = spec.height, n = std::min(spec.nchannels, 4);
+  if (w < 1 || h < 1 || w > shading::kMaxTextureSize || h > shading::kMaxTextureSize)
+    throw IoError(path, "image size " + std::to_string(w) + " x " + std::to_string(h) + " is outside 1.." +
+                            std::to_string(shading::kMaxTextureSize));
+  if (n < 1) throw IoError(path, "image has no channels");
+  const OIIO::TypeDesc fmt = spec.format;
+  const bool is8 = fmt.basetype == OIIO::TypeDesc::UINT8 || fmt.basetype == OIIO::TypeDesc::INT8;
+  const bool is_half = fmt.basetype == OIIO::TypeDesc::HALF;
+  const bool is_int =
+      !is8 && !is_half && fmt.basetype != OIIO::TypeDesc::FLOAT && fmt.basetype != OIIO::TypeDesc::DOUBLE;
+
+  shading::TexelFormat tf = shading::TexelFormat::rgba32f;
+  if (is8) tf = options.srgb ? shading::TexelFormat::rgba8_srgb : shading::TexelFormat::rgba8;
+  if (is_half) tf = shading::TexelFormat::rgba16f;
+  shading::Texture2D tex(w, h, tf, false);
+
+  const size_t texels = size_t(w) * size_t(h);
+  if (is8) {
+    std::vector<uint8_t> px(texels * size_t(n));
+    if (!in->read_image(0, 0, 0, n, OIIO::TypeDesc::UINT8, px.data()))
+      throw IoError(path, "cannot read the pixels: " + in->geterror());
+    for (int r = 0; r < h; ++r) {
+      std::byte* row = tex.mutable_row(0, h - 1 - r);  // file row r is texture row h − 1 − r
+      for (int x = 0; x < w; ++x) {
+        uint8_t v[4];
+        expand(px.data() + (size_t(r) * size_t(w) + size_t(x)) * size_t(n), n, uint8_t(255), v);
+        for (int c = 0; c < 4; ++c) row[size_t(x) * 4 + size_t(c)] = std::byte(v[c]);
+      }
+    }
+  } else {
+    std::vector<float> px(texels * size_t(n));
+    if (!in->read_image(0, 0, 0, n, OIIO::TypeDesc::FLOAT, px.data()))
+      throw IoError(path, "cannot read the pixels: " + in->geterror());
+    const bool decode = is_int && options.srgb;
+    for (int r = 0; r < h; ++r) {
+      for (int x = 0; x < w; ++x) {
+        float v[4];
+        expand(px.data() + (size_t(r) * size_t(w) + size_t(x)) * size_t(n), n, 1.0f, v);
+        if (decode)
+          for (int c = 0; c < 3; ++c) v[c] = raster::srgb_decode(v[c]);
+        tex.set_texel(x, h - 1 - r, glm::vec4(v[0], v[1], v[2], v[3]));
+      }
+    }
+  }
+  in->close();
+  if (options.mipmaps) tex.generate_mips();
+  return tex;
+}
+
+}  // namespace scenes::io

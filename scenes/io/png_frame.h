@@ -1,0 +1,20 @@
+// PNG frames: a colour target written as 8-bit sRGB through OpenImageIO, top row first (the target's row 0,
+// the bottom of the frame, is the file's last row).
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "raster/target.h"
+
+namespace scenes::io {
+
+// The frame as 8-bit sRGB bytes, top row first, 3 (RGB) or 4 (RGBA) bytes per pixel. An sRGB RGBA8 target's
+// bytes are taken as they are; a linear RGBA8 or an RGBA32F target is clamped to [0, 1] and sRGB-encoded
+// (alpha stays linear), then rounded to the nearest byte.
+std::vector<uint8_t> srgb8_top_first(const raster::ColorTarget& target, bool alpha = false);
+
+// Writes srgb8_top_first(target, alpha) as a PNG through a temporary file. Throws IoError.
+void write_png(const std::filesystem::path& path, const raster::ColorTarget& target, bool alpha = false);
+
+}  // namespace scenes::io

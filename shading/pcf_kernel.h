@@ -1,0 +1,226 @@
+// The kernels behind ShadowLookup2D's fast paths: hardware PCF with LEQUAL at level 0 of a d16, d24 or d32f
+// map, clamp_to_edge or clamp_to_border. Each does exactly the operations of footprint_2d + reduce_compare in
+// the same order (so results are bit-identical to the generic lookups), without switches or branches:
+//   pcf_lequal_scalar  the scalar twin, always compiled;
+//   pcf_lequal_sse     one lookup, its four taps in one SSE register (AVX2 builds);
+//   pcf_lequal_x8      eight lookups at once with AVX2 gathers (d24, d32f; d16 runs the one-lookup kernel).
+// The only intrinsics in shading/: raster/simd's eight-lane types have no floor or gather.
+#pragma once
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "shading/filter.h"
+#include "shading/sampler.h"
+#include "shading/texel_format.h"
+#include "shading/texture.h"
+#include "shading/wrap.h"
+
+#if defined(SHADOWLAB_SIMD_AVX2)
+#include <immintrin.h>
+#endif
+
+namespace shading::detail {
+
+// 1 where ref <= texel, else 0, without a branch: the same values as compare_ref(lequal, …).
+inline float le_one(float ref, float texel) {
+  return std::bit_cast<float>(uint32_t(-int32_t(ref <= texel)) & 0x3F800000u);
+}
+// a where c holds, else b, without a branch.
+inline float pick(bool c, float a, float b) {
+  const uint32_t m = uint32_t(-int32_t(c));
+  return std::bit_cast<float>((std::bit_cast<uint32_t>(a) & m) | (std::bit_cast<uint32_t>(b) & ~m));
+}
+
+template <TexelFormat F, bool kBorderWrap>
+inline float pcf_lequal_scalar(const TextureLevel& L, glm::vec3 str, float border_depth) {
+  const float u = clamp_texel_coord(str.x * L.fwidth - 0.5f);
+  const float v = clamp_texel_coord(str.y * L.fheight - 0.5f);
+  const float fu = std::floor(u), fv = std::floor(v);
+  const float a = u - fu, b = v - fv;
+  const int i0 = int(fu), j0 = int(fv);
+  const float ref = compare_reference(F, str.z);
+  float r[4];
+  if constexpr (!kBorderWrap) {
+    const int x0 = std::clamp(i0, 0, L.width - 1), x1 = std::clamp(i0 + 1, 0, L.width - 1);
+    const std::byte* row0 = L.row(std::clamp(j0, 0, L.height - 1));
+    const std::byte* row1 = L.row(std::clamp(j0 + 1, 0, L.height - 1));
+    r[0] = le_one(ref, Texel<F>::red(row0, x0));
+    r[1] = le_one(ref, Texel<F>::red(row0, x1));
+    r[2] = le_one(ref, Texel<F>::red(row1, x0));
+    r[3] = le_one(ref, Texel<F>::red(row1, x1));
+  } else {
+    const float rb = le_one(ref, border_depth);
+    const bool in_i0 = unsigned(i0) < unsigned(L.width), in_i1 = unsigned(i0 + 1) < unsigned(L.width);
+    const bool in_j0 = unsigned(j0) < unsigned(L.height), in_j1 = unsigned(j0 + 1) < unsigned(L.height);
+    const int x0 = in_i0 ? i0 : 0, x1 = in_i1 ? i0 + 1 : 0;
+    const std::byte* row0 = L.row(in_j0 ? j0 : 0);
+    const std::byte* row1 = L.row(in_j1 ? j0 + 1 : 0);
+    r[0] = pick(in_i0 && in_j0, le_one(ref, Texel<F>::red(row0, x0)), rb);
+    r[1] = pick(in_i1 && in_j0, le_one(ref, Texel<F>::red(row0, x1)), rb);
+    r[2] = pick(in_i0 && in_j1, le_one(ref, Texel<F>::red(row1, x0)), rb);
+    r[3] = pick(in_i1 && in_j1, le_one(ref, Texel<F>::red(row1, x1)), rb);
+  }
+  return lerp(b, lerp(a, r[0], r[1]), lerp(a, r[2], r[3]));
+}
+
+#if defined(SHADOWLAB_SIMD_AVX2)
+
+// Lanes (s, t, ·, ·) → u, v as the scalar code computes them: s · size − 0.5, kept within ±2^30 (NaN → −2^30:
+// maxps returns its second operand when the first is NaN).
+inline __m128 texel_coords(float s, float t, const TextureLevel& L) {
+  const __m128 uv = _mm_sub_ps(_mm_mul_ps(_mm_setr_ps(s, t, 0.0f, 0.0f), _mm_setr_ps(L.fwidth, L.fheight, 0.0f, 0.0f)),
+                               _mm_set1_ps(0.5f));
+  return _mm_min_ps(_mm_max_ps(uv, _mm_set1_ps(-kMaxTexelCoord)), _mm_set1_ps(kMaxTexelCoord));
+}
+
+template <TexelFormat F, bool kBorderWrap>
+inline float pcf_lequal_sse(const TextureLevel& L, glm::vec3 str, float border_depth) {
+  const __m128 uv = texel_coords(str.x, str.y, L);
+  const __m128 fl = _mm_floor_ps(uv);
+  const __m128 frac = _mm_sub_ps(uv, fl);  // (a, b, ·, ·)
+  const __m128i i0 = _mm_cvttps_epi32(fl);
+  // (x0, y0, x1, y1) = (i0, j0, i0 + 1, j0 + 1)
+  const __m128i ij = _mm_add_epi32(_mm_shuffle_epi32(i0, _MM_SHUFFLE(1, 0, 1, 0)), _mm_setr_epi32(0, 0, 1, 1));
+  const __m128i hi = _mm_setr_epi32(L.width - 1, L.height - 1, L.width - 1, L.height - 1);
+  const __m128i c = _mm_min_epi32(_mm_max_epi32(ij, _mm_setzero_si128()), hi);
+  const int x0 = _mm_cvtsi128_si32(c), y0 = _mm_extract_epi32(c, 1), x1 = _mm_extract_epi32(c, 2),
+            y1 = _mm_extract_epi32(c, 3);
+  const std::byte* row0 = L.row(y0);
+  const std::byte* row1 = L.row(y1);
+  // Taps in lanes (x0 y0, x0 y1, x1 y0, x1 y1).
+  const __m128 texels =
+      _mm_setr_ps(Texel<F>::red(row0, x0), Texel<F>::red(row1, x0), Texel<F>::red(row0, x1), Texel<F>::red(row1, x1));
+  const __m128 ref = _mm_set1_ps(compare_reference(F, str.z));
+  const __m128 one = _mm_set1_ps(1.0f);
+  __m128 r = _mm_and_ps(_mm_cmple_ps(ref, texels), one);
+  if constexpr (kBorderWrap) {
+    // A tap is inside when both its indices are: (x, y) lane masks before clamping, paired per tap.
+    const __m128i in = _mm_and_si128(_mm_cmpgt_epi32(ij, _mm_set1_epi32(-1)),
+                                     _mm_cmpgt_epi32(_mm_add_epi32(hi, _mm_set1_epi32(1)), ij));
+    const __m128i xs = _mm_shuffle_epi32(in, _MM_SHUFFLE(2, 2, 0, 0));
+    const __m128i ys = _mm_shuffle_epi32(in, _MM_SHUFFLE(3, 1, 3, 1));
+    const __m128 rb = _mm_and_ps(_mm_cmple_ps(ref, _mm_set1_ps(border_depth)), one);
+    r = _mm_blendv_ps(rb, r, _mm_castsi128_ps(_mm_and_si128(xs, ys)));
+  }
+  // Rows: (r00, r01) + a · ((r10, r11) − (r00, r01)), then along t.
+  const __m128 r_hi = _mm_movehl_ps(r, r);
+  const __m128 a = _mm_shuffle_ps(frac, frac, 0);
+  const __m128 x = _mm_add_ps(r, _mm_mul_ps(a, _mm_sub_ps(r_hi, r)));
+  const __m128 x1v = _mm_shuffle_ps(x, x, 1);
+  const __m128 b = _mm_shuffle_ps(frac, frac, 1);
+  return _mm_cvtss_f32(_mm_add_ss(x, _mm_mul_ss(b, _mm_sub_ss(x1v, x))));
+}
+
+// Eight lookups; F is d24 or d32f (32-bit texels gathered directly).
+template <TexelFormat F, bool kBorderWrap>
+inline void pcf_lequal_gather8(const TextureLevel& L, const glm::vec3* p, float* out, float border_depth) {
+  static_assert(F == TexelFormat::d24 || F == TexelFormat::d32f);
+  const __m256i stride3 = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
+  const float* pf = &p[0].x;
+  const __m256 s = _mm256_i32gather_ps(pf, stride3, 4), t = _mm256_i32gather_ps(pf + 1, stride3, 4);
+  __m256 ref = _mm256_i32gather_ps(pf + 2, stride3, 4);
+  const __m256 half = _mm256_set1_ps(0.5f), lo = _mm256_set1_ps(-kMaxTexelCoord), hi = _mm256_set1_ps(kMaxTexelCoord);
+  const __m256 u =
+      _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(s, _mm256_set1_ps(L.fwidth)), half), lo), hi);
+  const __m256 v =
+      _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(t, _mm256_set1_ps(L.fheight)), half), lo), hi);
+  const __m256 fu = _mm256_floor_ps(u), fv = _mm256_floor_ps(v);
+  const __m256 a = _mm256_sub_ps(u, fu), b = _mm256_sub_ps(v, fv);
+  const __m256i i0 = _mm256_cvttps_epi32(fu), j0 = _mm256_cvttps_epi32(fv);
+  const __m256i one = _mm256_set1_epi32(1), zero = _mm256_setzero_si256();
+  const __m256i wm = _mm256_set1_epi32(L.width - 1), hm = _mm256_set1_epi32(L.height - 1);
+  const __m256i i1 = _mm256_add_epi32(i0, one), j1 = _mm256_add_epi32(j0, one);
+  const __m256i x0 = _mm256_min_epi32(_mm256_max_epi32(i0, zero), wm),
+                x1 = _mm256_min_epi32(_mm256_max_epi32(i1, zero), wm);
+  const __m256i y0 = _mm256_min_epi32(_mm256_max_epi32(j0, zero), hm),
+                y1 = _mm256_min_epi32(_mm256_max_epi32(j1, zero), hm);
+  // Element offsets fit int32: rows are at most 16384 texels and a target's pitch at most 16384.
+  const __m256i pitch = _mm256_set1_epi32(int(L.row_bytes / 4));
+  const __m256i o0 = _mm256_mullo_epi32(y0, pitch), o1 = _mm256_mullo_epi32(y1, pitch);
+  const float* base = reinterpret_cast<const float*>(L.data);
+  __m256 tex[4] = {
+      _mm256_i32gather_ps(base, _mm256_add_epi32(o0, x0), 4), _mm256_i32gather_ps(base, _mm256_add_epi32(o0, x1), 4),
+      _mm256_i32gather_ps(base, _mm256_add_epi32(o1, x0), 4), _mm256_i32gather_ps(base, _mm256_add_epi32(o1, x1), 4)};
+  if constexpr (F == TexelFormat::d24) {
+    // Low 24 bits as a float code, divided by 2^24 − 1 (the same correctly rounded division as Texel<d24>),
+    // and the reference clamped to [0, 1] as compare_reference does.
+    const __m256i mask = _mm256_set1_epi32(0xFFFFFF);
+    const __m256 maxcode = _mm256_set1_ps(16777215.0f);
+    for (__m256& x : tex)
+      x = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(_mm256_castps_si256(x), mask)), maxcode);
+    ref = _mm256_min_ps(_mm256_max_ps(ref, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
+  }
+  const __m256 onef = _mm256_set1_ps(1.0f);
+  __m256 r[4];
+  for (int k = 0; k < 4; ++k) r[k] = _mm256_and_ps(_mm256_cmp_ps(ref, tex[k], _CMP_LE_OQ), onef);
+  if constexpr (kBorderWrap) {
+    const __m256 rb = _mm256_and_ps(_mm256_cmp_ps(ref, _mm256_set1_ps(border_depth), _CMP_LE_OQ), onef);
+    auto inside = [](__m256i i, __m256i max) {
+      return _mm256_andnot_si256(_mm256_cmpgt_epi32(_mm256_setzero_si256(), i),
+                                 _mm256_xor_si256(_mm256_cmpgt_epi32(i, max), _mm256_set1_epi32(-1)));
+    };
+    const __m256i ix0 = inside(i0, wm), ix1 = inside(i1, wm), iy0 = inside(j0, hm), iy1 = inside(j1, hm);
+    const __m256i in[4] = {_mm256_and_si256(ix0, iy0), _mm256_and_si256(ix1, iy0), _mm256_and_si256(ix0, iy1),
+                           _mm256_and_si256(ix1, iy1)};
+    for (int k = 0; k < 4; ++k) r[k] = _mm256_blendv_ps(rb, r[k], _mm256_castsi256_ps(in[k]));
+  }
+  const __m256 xa = _mm256_add_ps(r[0], _mm256_mul_ps(a, _mm256_sub_ps(r[1], r[0])));
+  const __m256 xb = _mm256_add_ps(r[2], _mm256_mul_ps(a, _mm256_sub_ps(r[3], r[2])));
+  _mm256_storeu_ps(out, _mm256_add_ps(xa, _mm256_mul_ps(b, _mm256_sub_ps(xb, xa))));
+}
+
+#endif  // SHADOWLAB_SIMD_AVX2
+
+// One lookup: the SSE kernel where the build has it, else the scalar twin.
+template <TexelFormat F, bool kBorderWrap>
+inline float pcf_lequal(const TextureLevel& L, glm::vec3 str, float border_depth) {
+#if defined(SHADOWLAB_SIMD_AVX2)
+  return pcf_lequal_sse<F, kBorderWrap>(L, str, border_depth);
+#else
+  return pcf_lequal_scalar<F, kBorderWrap>(L, str, border_depth);
+#endif
+}
+
+// The common shadow case: compare LEQUAL, LINEAR without mips (so λ cannot matter), clamp_to_edge or
+// clamp_to_border on both axes, a d16, d24 or d32f texture.
+inline bool pcf_fast_path_applies(const Texture2D& t, const Sampler& s) {
+  return s.compare_mode == CompareMode::ref_to_texture && s.compare_func == CompareFunc::lequal &&
+         s.mag_filter == Filter::linear && s.min_filter == Filter::linear &&
+         (s.mip_filter == MipFilter::none || t.levels() == 1) && s.wrap_s == s.wrap_t &&
+         (s.wrap_s == Wrap::clamp_to_edge || s.wrap_s == Wrap::clamp_to_border) && is_depth(t.format());
+}
+
+// One lookup through the kernels for a texture and sampler pcf_fast_path_applies to.
+inline float pcf_fast(const Texture2D& t, const Sampler& s, glm::vec3 str) {
+  const TextureLevel& L = t.level(0);
+  const float border = border_texel(t.format(), s.border_color).r;
+  const bool bw = s.wrap_s == Wrap::clamp_to_border;
+  switch (t.format()) {
+    case TexelFormat::d16:
+      return bw ? pcf_lequal<TexelFormat::d16, true>(L, str, border)
+                : pcf_lequal<TexelFormat::d16, false>(L, str, border);
+    case TexelFormat::d24:
+      return bw ? pcf_lequal<TexelFormat::d24, true>(L, str, border)
+                : pcf_lequal<TexelFormat::d24, false>(L, str, border);
+    default:
+      return bw ? pcf_lequal<TexelFormat::d32f, true>(L, str, border)
+                : pcf_lequal<TexelFormat::d32f, false>(L, str, border);
+  }
+}
+
+// n lookups: eight at a time with gathers for 32-bit formats, the rest one by one.
+template <TexelFormat F, bool kBorderWrap>
+inline void pcf_lequal_many(const TextureLevel& L, const glm::vec3* p, float* out, size_t n, float border_depth) {
+  size_t k = 0;
+#if defined(SHADOWLAB_SIMD_AVX2)
+  if constexpr (F != TexelFormat::d16)
+    for (; k + 8 <= n; k += 8) pcf_lequal_gather8<F, kBorderWrap>(L, p + k, out + k, border_depth);
+#endif
+  for (; k < n; ++k) out[k] = pcf_lequal<F, kBorderWrap>(L, p[k], border_depth);
+}
+
+}  // namespace shading::detail
