@@ -1,0 +1,49 @@
+// Rendering a whole scene frame: every light's shadow maps (through the technique layer in shading/techniques),
+// then the camera pass with Blinn-Phong shading that reads them. The one entry point `shadowlab render`, the
+// golden-image tests and the frame benchmarks share.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "raster/renderer.h"
+#include "raster/target.h"
+#include "scenes/io/exr_map.h"
+#include "scenes/scene.h"
+
+namespace frame {
+
+// Overrides from the command line; unset fields keep what each light's ShadowSettings say.
+struct FrameOptions {
+  int width = 1280, height = 720;
+  std::optional<std::string> technique;  // e.g. "shadowmap"
+  std::optional<std::string> filter;     // hard | pcf | poisson | stratified | rotated | early-bail
+  std::optional<std::string> bias;       // none | constant | slope | offset | normal
+  std::optional<int> shadow_size;        // map side in texels
+  size_t camera = 0;                     // index into Scene::cameras
+  std::optional<bool> cull_front;        // back faces only into the map
+  std::optional<int> poisson_taps;       // 4 or 16
+  std::optional<bool> pcf_taps;          // Poisson taps are hardware 2×2 PCF lookups
+  glm::vec4 clear_color{0.0f, 0.0f, 0.4f, 1.0f};  // the tutorial's glClearColor (alpha 1)
+};
+
+struct FrameStats {
+  double shadow_ms = 0, camera_ms = 0;  // wall time of the map passes and of the camera pass
+  size_t maps_rendered = 0;
+  raster::DrawStats draws;
+};
+
+struct Frame {
+  raster::ColorTarget color;                  // linear RGBA8 (PNG writing encodes to sRGB)
+  std::vector<scenes::io::ExrMap> maps;       // every shadow map of every light, ready for write_exr_map
+  std::vector<std::string> map_names;         // file stem per map, e.g. "light0-sun" or "light1-spot"
+  FrameStats stats;
+  std::vector<std::string> notes;             // e.g. lights drawn unshadowed because their technique is not built
+};
+
+// Throws std::invalid_argument with a message naming the option when an override is unknown or out of range.
+Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, raster::Renderer& renderer);
+
+}  // namespace frame

@@ -1,0 +1,93 @@
+// The classic shadow map of the tutorial: one pass per light, orthographic for a directional light and
+// perspective for a spot. Three steps, each on plain data: plan (layout + light matrices), build (the depth
+// pass, with the `offset` bias and the back-face option as its draw state), read (a ClassicReader snapshotted
+// once per draw and classic_visibility<Filter> per fragment: bias, projection, filter).
+#pragma once
+#include <cmath>
+#include <optional>
+#include <span>
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "raster/renderer.h"
+#include "shading/techniques/depth_pass.h"
+#include "shading/techniques/light_frustum.h"
+#include "shading/techniques/shadow_filters.h"
+#include "shading/techniques/shadow_map_set.h"
+#include "shading/techniques/technique_types.h"
+
+namespace shading::tech {
+
+// The light as the technique sees it.
+struct ClassicLight {
+  LightKind kind = LightKind::directional;
+  glm::vec3 position{0.0f};                // spot
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way light travels, unit length
+  float outer_angle = 0.4f;                // spot: cone half-angle, radians
+  float range = 50.0f;                     // spot: far plane
+};
+
+// What a directional light's box is fitted to; `fixed` replaces the fit with a hand-made box.
+struct ClassicFit {
+  Box receivers;  // e.g. camera_receiver_box(camera view-proj, scene bounds)
+  Box casters;    // bounds of every shadow caster
+  std::optional<LightMatrices> fixed;
+};
+
+// Layout and matrices: one map of settings.map_size² in settings.depth_format.
+ShadowMapSet plan_classic_map(const ClassicLight& light, const ClassicSettings& settings, const ClassicFit& fit);
+
+// The depth pass state the settings ask for: front faces culled for `cull_front`, polygon offset for `offset`.
+DepthPassOptions classic_depth_options(const ClassicSettings& settings);
+
+// Everything a fragment needs to read a light's classic map, copied once per draw.
+struct ClassicReader {
+  glm::mat4 shadow{1.0f};  // bias × proj × view
+  bool perspective = false;
+  LightKind kind = LightKind::directional;
+  glm::vec3 position{0.0f}, direction{0.0f, -1.0f, 0.0f};
+  BiasParams bias;
+  FilterParams filter;
+  MapLookups maps;
+};
+
+// The set must outlive the reader (lookups view its targets).
+ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& light, const ClassicSettings& s);
+
+// The depth bias subtracted from the reference for a receiver with cos(angle to the light) = ndotl.
+inline float depth_bias(const BiasParams& b, float ndotl) {
+  switch (b.kind) {
+    case BiasKind::constant: return b.constant;
+    case BiasKind::slope: {
+      const float c = ndotl < 0.0f ? 0.0f : (ndotl > 1.0f ? 1.0f : ndotl);
+      const float v = b.slope * std::tan(std::acos(c));
+      return v < 0.0f ? 0.0f : (v > b.slope_max ? b.slope_max : v);
+    }
+    default: return 0.0f;
+  }
+}
+
+// Visibility in [0, 1] of world point p with unit normal n, seen at window position frag. A spot light leaves
+// everything outside its map (and behind it) unlit; a directional map's outside reads as lit (border depth 1).
+template <class Filter, bool kPcfTaps>
+float classic_visibility(const ClassicReader& r, glm::vec3 p, glm::vec3 n, glm::vec2 frag) {
+  const glm::vec3 to_light = r.kind == LightKind::spot ? glm::normalize(r.position - p) : -r.direction;
+  const float ndotl = glm::dot(n, to_light);
+  glm::vec3 q = p;
+  if (r.bias.kind == BiasKind::normal) q = p + n * r.bias.normal_offset;
+  const glm::vec4 c = r.shadow * glm::vec4(q, 1.0f);
+  const float b = depth_bias(r.bias, ndotl);
+  SampleContext ctx{glm::vec2(c.x, c.y), c.z - b, frag, p};
+  if (r.perspective) {
+    // textureProj: (s, t, r − bias) · (1/q), as the tutorial's (ShadowCoord.z − bias) / ShadowCoord.w.
+    if (!(c.w > 0.0f)) return 0.0f;
+    const float w = 1.0f / c.w;
+    ctx.st = glm::vec2(c.x * w, c.y * w);
+    ctx.ref = (c.z - b) * w;
+    if (!(ctx.st.x >= 0.0f && ctx.st.x <= 1.0f && ctx.st.y >= 0.0f && ctx.st.y <= 1.0f)) return 0.0f;
+  }
+  return Filter{}(Taps<kPcfTaps>{&r.maps}, ctx, r.filter);
+}
+
+}  // namespace shading::tech

@@ -1,0 +1,114 @@
+// How a classic map is read: the filters as compile-time types. Each takes a Taps object (one compare per tap,
+// or one hardware 2×2 PCF lookup per tap) and a SampleContext (map coordinates, reference depth, pixel and
+// world position) and returns the visibility in [0, 1]. The camera shader is a template over the filter, so the
+// choice among them is made once per draw (dispatch_filter), never per pixel.
+#pragma once
+#include <cstdint>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "shading/shadow_lookup.h"
+#include "shading/techniques/poisson.h"
+#include "shading/techniques/technique_types.h"
+
+namespace shading::tech {
+
+// Where and what one lookup compares.
+struct SampleContext {
+  glm::vec2 st;      // map coordinates in [0, 1]
+  float ref;         // reference depth, bias already applied
+  glm::vec2 frag;    // gl_FragCoord.xy
+  glm::vec3 world;   // world position (before any normal offset)
+};
+
+// The two lookups a filter can be built from, over the same map: `nearest` (one compare, NEAREST) and
+// `linear` (hardware PCF, LINEAR with compare). Snapshotted once per draw.
+struct MapLookups {
+  ShadowLookup2D nearest, linear;
+};
+
+// One tap at st + offset: a single compare, or (kPcf) a bilinear PCF of four compares.
+template <bool kPcf>
+struct Taps {
+  const MapLookups* maps;
+  float operator()(const SampleContext& c, glm::vec2 offset) const {
+    const glm::vec3 str(c.st.x + offset.x, c.st.y + offset.y, c.ref);
+    if constexpr (kPcf) return maps->linear(str);
+    else return maps->nearest(str);
+  }
+};
+
+struct HardFilter {
+  template <class T>
+  float operator()(const T& taps, const SampleContext& c, const FilterParams&) const {
+    return taps(c, glm::vec2(0.0f));
+  }
+};
+
+// Hardware PCF: one LINEAR compare lookup (the taps' own mode is ignored: this filter is the PCF lookup).
+struct PcfFilter {
+  template <class T>
+  float operator()(const T& taps, const SampleContext& c, const FilterParams&) const {
+    return Taps<true>{taps.maps}(c, glm::vec2(0.0f));
+  }
+};
+
+enum class PoissonMode : uint8_t { fixed, stratified, rotated };
+
+// Poisson disc of `taps` points (4 or 16) scaled by `spread`: fixed (banding), stratified (each tap's disc index
+// hashed per pixel or world point), rotated (the disc turned per pixel). Visibility = mean of the taps.
+template <PoissonMode kMode>
+struct PoissonFilter {
+  template <class T>
+  float operator()(const T& taps, const SampleContext& c, const FilterParams& p) const {
+    const int n = p.taps >= 16 ? 16 : 4;
+    uint32_t seed = 0;
+    if constexpr (kMode != PoissonMode::fixed) seed = p.stratify_world ? world_seed(c.world) : pixel_seed(c.frag);
+    glm::vec2 rot(1.0f, 0.0f);
+    if constexpr (kMode == PoissonMode::rotated) rot = rotation_of(seed);
+    float sum = 0.0f;
+    for (int i = 0; i < n; ++i) {
+      glm::vec2 d;
+      if constexpr (kMode == PoissonMode::stratified) d = kPoissonDisk[size_t(stratified_index(seed, i))];
+      else d = kPoissonDisk[size_t(i)];
+      if constexpr (kMode == PoissonMode::rotated) d = glm::vec2(rot.x * d.x - rot.y * d.y, rot.y * d.x + rot.x * d.y);
+      sum += taps(c, d * p.spread);
+    }
+    return sum / float(n);
+  }
+};
+
+// Early bailing: the four outer taps of the 16-point disc; where they agree (all lit or all shadowed) that is
+// the answer, elsewhere the full 16-tap kernel is taken.
+struct EarlyBailFilter {
+  template <class T>
+  float operator()(const T& taps, const SampleContext& c, const FilterParams& p) const {
+    float outer = 0.0f;
+    for (int i : kOuterTaps) outer += taps(c, kPoissonDisk[size_t(i)] * p.spread);
+    if (outer == 0.0f || outer == 4.0f) return outer * 0.25f;
+    float sum = 0.0f;
+    for (const glm::vec2& d : kPoissonDisk) sum += taps(c, d * p.spread);
+    return sum / 16.0f;
+  }
+};
+
+// Calls fn.template operator()<Filter, kPcfTaps>() once for the run-time choice.
+template <class Fn>
+decltype(auto) dispatch_filter(FilterKind kind, bool pcf_taps, Fn&& fn) {
+  auto go = [&]<class F>() -> decltype(auto) {
+    if (pcf_taps) return fn.template operator()<F, true>();
+    return fn.template operator()<F, false>();
+  };
+  switch (kind) {
+    case FilterKind::hard: return go.template operator()<HardFilter>();
+    case FilterKind::pcf: return go.template operator()<PcfFilter>();
+    case FilterKind::poisson: return go.template operator()<PoissonFilter<PoissonMode::fixed>>();
+    case FilterKind::stratified: return go.template operator()<PoissonFilter<PoissonMode::stratified>>();
+    case FilterKind::rotated: return go.template operator()<PoissonFilter<PoissonMode::rotated>>();
+    case FilterKind::early_bail: break;
+  }
+  return go.template operator()<EarlyBailFilter>();
+}
+
+}  // namespace shading::tech

@@ -1,0 +1,42 @@
+// How a light's shadow map is laid out: a ShadowMapSet of one or more passes, each a viewport with view and
+// projection matrices inside one of the set's depth targets. The classic technique has one pass; cascades or
+// cube faces would have several, chosen per pixel when reading. Building (depth_pass.h) and reading
+// (shadow_receiver.h) both work from this plain description.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "raster/state.h"
+#include "raster/target.h"
+
+namespace shading::tech {
+
+struct ShadowPass {
+  std::string label;        // "main", "cascade0", "+X", ...
+  size_t target = 0;        // index into ShadowMapSet::targets
+  raster::Rect viewport;    // where the pass renders inside its target (lower-left origin)
+  glm::mat4 view{1.0f};
+  glm::mat4 proj{1.0f};
+  bool perspective = false; // read with textureProj (divide by q)
+};
+
+struct ShadowMapSet {
+  // Targets are held by pointer so that texture views over them stay valid when the set is moved.
+  std::vector<std::unique_ptr<raster::DepthTarget>> targets;
+  std::vector<ShadowPass> passes;
+};
+
+// The tutorial's bias matrix: clip space [-1, 1] to texture space [0, 1] on x, y and z (scale and offset 0.5).
+inline glm::mat4 bias_matrix() {
+  glm::mat4 b(0.5f);
+  b[3] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+  return b;
+}
+
+// World to texture space (s, t, r, q) of a pass whose viewport covers its whole target: bias × proj × view.
+inline glm::mat4 shadow_matrix(const ShadowPass& p) { return bias_matrix() * p.proj * p.view; }
+
+}  // namespace shading::tech

@@ -1,0 +1,9 @@
+# Tests of shading/techniques/ and cli/frame/: analytic shadow-map cases (shadow area, PCF ramp, acne against
+# slope bias), golden-image hashes of the tutorial steps at several thread counts, and the bias measurements.
+list(APPEND SHADOWLAB_TEST_SOURCES
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/classic_analytic_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/frustum_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/golden_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/bias_measure_test.cpp
+)
+list(APPEND SHADOWLAB_TEST_LIBS shadowlab::techniques shadowlab::frame)
