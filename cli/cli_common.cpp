@@ -1,0 +1,101 @@
+// Option parsing, scene lookup and terminal progress shared by the commands (see cli_common.h).
+#include "cli/cli_common.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+#include "raster/limits.h"
+#include "scenes/builtin_scenes.h"
+#include "scenes/scene_build.h"
+
+namespace cli {
+namespace {
+
+bool parse_int(std::string_view s, long long& out) {
+  if (s.empty()) return false;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && ptr == s.data() + s.size();
+}
+
+bool parse_float(std::string_view s, float& out) {
+  // std::from_chars for float is not in every libstdc++; strtof on a copy is exact and portable.
+  const std::string copy(s);
+  if (copy.empty() || std::isspace(static_cast<unsigned char>(copy[0]))) return false;
+  char* end = nullptr;
+  out = std::strtof(copy.c_str(), &end);
+  return end == copy.c_str() + copy.size() && std::isfinite(out);
+}
+
+}  // namespace
+
+int check_side(long long value, const std::string& option) {
+  if (value < 1 || value > raster::kMaxTargetSize)
+    throw CliError(option, std::to_string(value) + " is outside 1.." + std::to_string(raster::kMaxTargetSize));
+  return int(value);
+}
+
+Size2 parse_size(const std::string& text, const std::string& option) {
+  const size_t x = text.find_first_of("xX");
+  long long w = 0, h = 0;
+  if (x == std::string::npos || !parse_int(std::string_view(text).substr(0, x), w) ||
+      !parse_int(std::string_view(text).substr(x + 1), h))
+    throw CliError(option, "expected WIDTHxHEIGHT, got '" + text + "'");
+  if (w < 1 || w > raster::kMaxTargetSize)
+    throw CliError(option, "width " + std::to_string(w) + " is outside 1.." + std::to_string(raster::kMaxTargetSize));
+  if (h < 1 || h > raster::kMaxTargetSize)
+    throw CliError(option,
+                   "height " + std::to_string(h) + " is outside 1.." + std::to_string(raster::kMaxTargetSize));
+  return {int(w), int(h)};
+}
+
+std::pair<float, float> parse_float_pair(const std::string& text, const std::string& option) {
+  const size_t comma = text.find(',');
+  float a = 0, b = 0;
+  if (comma == std::string::npos || !parse_float(std::string_view(text).substr(0, comma), a) ||
+      !parse_float(std::string_view(text).substr(comma + 1), b))
+    throw CliError(option, "expected two finite numbers as FACTOR,UNITS, got '" + text + "'");
+  return {a, b};
+}
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+void check_output_dir(const std::string& file, const std::string& option) {
+  const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+  std::error_code ec;
+  if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+    throw CliError(option, "directory " + parent.string() + " does not exist");
+}
+
+scenes::Scene load_scene_or_builtin(const std::string& name) {
+  const std::filesystem::path path(name);
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec)) return scenes::load_scene(path);
+  if (std::filesystem::exists(path, ec)) throw CliError(name, "not a regular file");
+  if (scenes::is_builtin_scene(name)) return scenes::builtin_scene(name);
+  if (name.find('/') != std::string::npos || path.has_extension()) throw CliError(name, "no such file");
+  return scenes::builtin_scene(name);  // throws `NAME: unknown built-in scene (known: ...)`
+}
+
+Progress::Progress() : enabled_(isatty(STDERR_FILENO) == 1) {}
+
+Progress::~Progress() {
+  if (dirty_) std::fputs("\r\033[K", stderr);  // the progress line disappears
+}
+
+void Progress::update(const std::string& line) {
+  if (!enabled_) return;
+  std::fprintf(stderr, "\r\033[K%s", line.c_str());
+  std::fflush(stderr);
+  dirty_ = true;
+}
+
+}  // namespace cli

@@ -1,0 +1,80 @@
+// What every shadowlab command shares: the one error type for bad options (printed as
+// `shadowlab: error: WHERE: what`), option parsers for sizes and counts, scene loading by file or built-in
+// name, terminal-only progress, and a stopwatch.
+#pragma once
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "scenes/scene.h"
+
+namespace cli {
+
+// Bad input found by the CLI itself. what() is `WHERE: what is wrong`; WHERE is an option name or a file.
+class CliError : public std::runtime_error {
+ public:
+  CliError(const std::string& where, const std::string& what) : std::runtime_error(where + ": " + what) {}
+};
+
+// A subcommand as main() sees it: its parser, and what to run once it has parsed. run() returns the exit code.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+Command add_render_command(CLI::App& parent);
+Command add_shadowmap_command(CLI::App& parent);
+Command add_inspect_command(CLI::App& parent);
+Command add_diff_command(CLI::App& parent);
+Command add_list_command(CLI::App& parent);
+
+struct Size2 {
+  int width = 0, height = 0;
+};
+
+// "WxH" with both sides in 1..raster::kMaxTargetSize; `option` names the option in errors.
+Size2 parse_size(const std::string& text, const std::string& option);
+// A side length in 1..raster::kMaxTargetSize.
+int check_side(long long value, const std::string& option);
+// "A,B" as two finite floats.
+std::pair<float, float> parse_float_pair(const std::string& text, const std::string& option);
+
+// A scene file (JSON, .gltf, .glb) when `name` names an existing file, else a built-in scene. A name that looks
+// like a path (a '/' or an extension) but is no file is reported as a missing file.
+scenes::Scene load_scene_or_builtin(const std::string& name);
+
+// Progress lines on stderr, only when stderr is a terminal; each call overwrites the previous line.
+class Progress {
+ public:
+  Progress();
+  ~Progress();
+  void update(const std::string& line);
+
+ private:
+  bool enabled_ = false;
+  bool dirty_ = false;
+};
+
+// Milliseconds since construction.
+class Stopwatch {
+ public:
+  double ms() const {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// Fails early (before any long work) when the folder an output file goes to does not exist.
+void check_output_dir(const std::string& file, const std::string& option);
+
+// A file's lower-case extension with its dot (".exr"), for format decisions.
+std::string lower_extension(const std::filesystem::path& path);
+
+}  // namespace cli

@@ -1,0 +1,122 @@
+// `shadowlab render SCENE`: a whole frame (every light's shadow maps, then the shaded camera view) through
+// cli/frame, written as a PNG, with every shadow map as EXR on request and per-frame statistics with --stats.
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cli/cli_common.h"
+#include "scenes/shadow_settings.h"
+#ifdef SHADOWLAB_HAVE_FRAME
+#include "cli/frame/frame.h"
+#include "raster/renderer.h"
+#include "scenes/io/exr_map.h"
+#include "scenes/io/png_frame.h"
+#endif
+
+namespace cli {
+namespace {
+
+struct RenderArgs {
+  std::string scene;
+  std::string technique, filter, bias, size = "1280x720", maps, out = "frame.png";
+  long long shadow_size = 0;
+  CLI::Option* shadow_size_option = nullptr;  // given or not
+  int threads = -1;
+  int frames = 1;
+  bool stats = false;
+};
+
+// An override's name is checked against the scene module's table before anything is loaded.
+void check_name(const std::string& value, const std::string& option, const char* what, bool known,
+                std::span<const scenes::NamedEntry> table) {
+  if (!value.empty() && !known)
+    throw CliError(option, std::string("unknown ") + what + " '" + value + "' (known: " + scenes::join_names(table) +
+                               ")");
+}
+
+int run_render(const RenderArgs& a) {
+  const Size2 size = parse_size(a.size, "--size");
+  check_name(a.technique, "--technique", "technique", scenes::parse_technique(a.technique).has_value(),
+             scenes::technique_names());
+  check_name(a.filter, "--filter", "filter", scenes::parse_filter(a.filter).has_value(), scenes::filter_names());
+  check_name(a.bias, "--bias", "bias mode", scenes::parse_bias_mode(a.bias).has_value(), scenes::bias_mode_names());
+  const std::optional<int> shadow_size =
+      a.shadow_size_option->count() ? std::optional<int>(check_side(a.shadow_size, "--shadow-size")) : std::nullopt;
+  if (a.threads < -1) throw CliError("--threads", "expected 0 or more threads");
+  if (a.frames < 1) throw CliError("--frames", "expected 1 or more frames");
+  if (lower_extension(a.out) != ".png") throw CliError("--out", "expected a .png file name");
+  check_output_dir(a.out, "--out");
+  if (!a.maps.empty()) {
+    std::error_code ec;
+    if (std::filesystem::exists(a.maps, ec) && !std::filesystem::is_directory(a.maps, ec))
+      throw CliError("--maps", a.maps + " exists and is not a directory");
+  }
+
+  const scenes::Scene scene = load_scene_or_builtin(a.scene);
+#ifndef SHADOWLAB_HAVE_FRAME
+  (void)scene, (void)size, (void)shadow_size;
+  throw CliError("render", "this build of shadowlab has no frame renderer (cli/frame was not built)");
+#else
+  frame::FrameOptions options;
+  options.width = size.width;
+  options.height = size.height;
+  if (!a.technique.empty()) options.technique = a.technique;
+  if (!a.filter.empty()) options.filter = a.filter;
+  if (!a.bias.empty()) options.bias = a.bias;
+  options.shadow_size = shadow_size;
+
+  raster::Renderer renderer(a.threads);
+  Progress progress;
+  std::optional<frame::Frame> result;  // Frame has no empty state: the last frame rendered
+  for (int i = 0; i < a.frames; ++i) {
+    if (a.frames > 1) progress.update("frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames));
+    const Stopwatch watch;
+    result.emplace(frame::render_frame(scene, options, renderer));
+    const double total = watch.ms();
+    if (a.stats) {
+      const frame::FrameStats& s = result->stats;
+      std::printf(
+          "frame %d: total %.3f ms, shadow %.3f ms, camera %.3f ms, maps %zu, triangles %llu, setups %llu, "
+          "clipped %llu, culled %llu, rejected %llu\n",
+          i + 1, total, s.shadow_ms, s.camera_ms, s.maps_rendered, (unsigned long long)s.draws.triangles,
+          (unsigned long long)s.draws.setups, (unsigned long long)s.draws.clipped,
+          (unsigned long long)s.draws.culled, (unsigned long long)s.draws.rejected);
+    }
+  }
+
+  if (!a.maps.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.maps, ec);
+    if (ec) throw CliError("--maps", "cannot create directory " + a.maps + " (" + ec.message() + ")");
+    for (size_t m = 0; m < result->maps.size(); ++m) {
+      const std::string name = m < result->map_names.size() ? result->map_names[m] : "map" + std::to_string(m);
+      scenes::io::write_exr_map(std::filesystem::path(a.maps) / (name + ".exr"), result->maps[m]);
+    }
+  }
+  scenes::io::write_png(a.out, result->color);
+  return 0;
+#endif
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& parent) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* app = parent.add_subcommand("render", "Render a scene: shadow maps, then the shaded camera view");
+  app->add_option("scene", args->scene, "Scene: a JSON file, a .gltf/.glb file, or a built-in name (see list)")
+      ->required();
+  app->add_option("--technique", args->technique, "Shadow technique for every light (see list)");
+  app->add_option("--filter", args->filter, "Shadow filter for every light (see list)");
+  app->add_option("--bias", args->bias, "Bias mode for every light (see list)");
+  app->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (default 1280x720)");
+  args->shadow_size_option = app->add_option("--shadow-size", args->shadow_size, "Shadow map side in texels");
+  app->add_option("--threads", args->threads, "Worker threads (0: inline; default: all cores)");
+  app->add_option("--frames", args->frames, "Render the frame N times (timing); the last one is written");
+  app->add_flag("--stats", args->stats, "Print per-frame timings and triangle counts");
+  app->add_option("--out", args->out, "Output PNG (default frame.png)");
+  app->add_option("--maps", args->maps, "Also write every shadow map as DIR/<map name>.exr");
+  return {app, [args] { return run_render(*args); }};
+}
+
+}  // namespace cli

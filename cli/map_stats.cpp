@@ -1,0 +1,55 @@
+// Depth-map statistics and the false-colour preview (see map_stats.h).
+#include "cli/map_stats.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace cli {
+
+MapStats map_stats(const scenes::io::ExrMap& map) {
+  MapStats s;
+  s.texels = map.z.size();
+  for (const float v : map.z) {
+    s.min = std::min(s.min, v);
+    s.max = std::max(s.max, v);
+    if (v < 1.0f) {
+      ++s.covered;
+      s.covered_min = std::min(s.covered_min, v);
+      s.covered_max = std::max(s.covered_max, v);
+    }
+  }
+  return s;
+}
+
+raster::ColorTarget false_colour(const scenes::io::ExrMap& map, const MapStats& stats) {
+  // Piecewise-linear ramp through a few perceptually ordered sRGB colours (a viridis-like sequence).
+  static constexpr std::array<std::array<float, 3>, 5> kRamp = {{{68, 1, 84},
+                                                                  {59, 82, 139},
+                                                                  {33, 145, 140},
+                                                                  {94, 201, 98},
+                                                                  {253, 231, 37}}};
+  raster::ColorTarget out(map.width, map.height, raster::ColorFormat::rgba8, /*srgb=*/true);
+  const float lo = stats.covered_min;
+  const float range = stats.covered_max > lo ? stats.covered_max - lo : 1.0f;
+  for (int y = 0; y < map.height; ++y) {
+    uint8_t* row = out.row8(y);
+    for (int x = 0; x < map.width; ++x) {
+      const float v = map.at(x, y);
+      uint8_t* px = row + 4 * x;
+      px[3] = 255;
+      if (!(v < 1.0f)) {
+        px[0] = px[1] = px[2] = 0;
+        continue;
+      }
+      const float t = std::clamp((v - lo) / range, 0.0f, 1.0f) * float(kRamp.size() - 1);
+      const size_t i = std::min(size_t(t), kRamp.size() - 2);
+      const float f = t - float(i);
+      for (int c = 0; c < 3; ++c)
+        px[c] = uint8_t(std::lround(kRamp[i][size_t(c)] + f * (kRamp[i + 1][size_t(c)] - kRamp[i][size_t(c)])));
+    }
+  }
+  return out;
+}
+
+}  // namespace cli

@@ -1,0 +1,201 @@
+// End-to-end tests of the shadowlab executable: each runs the built binary (SHADOWLAB_CLI) on small files in
+// a temporary folder of the build tree and checks exit codes, the one-line error shape, that failed runs leave
+// no output, and that the files written hold what the scene and matrices say.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "scenes/io/exr_map.h"
+#include "tests/scenes/gltf_fixture.h"
+#include "tests/support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Runs `shadowlab ARGS` in `dir` (a shell command line; arguments are quoted by the caller where needed).
+Outcome shadowlab(const fs::path& dir, const std::string& args) {
+  const std::string cmd = "cd '" + dir.string() + "' && '" SHADOWLAB_CLI "' " + args + " >stdout.txt 2>stderr.txt";
+  const int status = std::system(cmd.c_str());
+  Outcome r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(dir / "stdout.txt");
+  r.err = slurp(dir / "stderr.txt");
+  return r;
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+// A 4 × 4 m floor at y = 0 and a unit box standing on it (top at y = 1).
+const char* kScene = R"({"objects": [{"primitive": {"type": "plane", "size": [4, 4]}},
+  {"primitive": {"type": "box", "size": [1, 1, 1]}, "transform": {"translate": [0, 0.5, 0]}}]})";
+// Looking straight down from (0, 5, 0) (eye x = world x, eye y = −world z), orthographic ±2 m, near 1, far 9:
+// window depth = (distance − 1) / 8, so the floor is at 0.5 and the box top at 0.375.
+const char* kView = "[1,0,0,0, 0,0,1,0, 0,-1,0,0, 0,0,-5,1]";
+const char* kProj = "[0.5,0,0,0, 0,0.5,0,0, 0,0,-0.25,0, 0,0,-1.25,1]";
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = testsupport::temp_dir(std::string("cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    write(dir / "scene.json", kScene);
+    write(dir / "m.json", std::string(R"({"view": )") + kView + R"(, "proj": )" + kProj + "}");
+  }
+  // A bad-input run: exit code 2, exactly one line `shadowlab: error: WHERE: what`, and no file named `out`.
+  void expect_bad(const std::string& args, const std::string& where, const std::string& out = "") {
+    const Outcome r = shadowlab(dir, args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_THAT(r.err, ::testing::MatchesRegex("shadowlab: error: [^\n]+: [^\n]+\n")) << args;
+    EXPECT_EQ(r.err.rfind("shadowlab: error: " + where + ": ", 0), 0u) << args << "\n" << r.err;
+    if (!out.empty()) {
+      EXPECT_FALSE(fs::exists(dir / out)) << args;
+    }
+    for (const auto& e : fs::directory_iterator(dir))  // no temporary left behind either
+      EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  }
+  std::string shadowmap(const std::string& extra) {
+    return "shadowmap --scene scene.json --light-matrix m.json --size 16x16 --format d32f --out d.exr " + extra;
+  }
+  fs::path dir;
+};
+
+TEST_F(Cli, ShadowmapMatchesAnalyticDepth) {
+  const Outcome r = shadowlab(dir, shadowmap(""));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const scenes::io::ExrMap map = scenes::io::read_exr_map(dir / "d.exr");
+  ASSERT_EQ(map.width, 16);
+  ASSERT_EQ(map.height, 16);
+  EXPECT_EQ(map.technique, "shadowmap");
+  EXPECT_EQ(map.encoding, "window-depth");
+  EXPECT_EQ(map.depth_format, "d32f");
+  // The box spans NDC x, y in [−0.25, 0.25]: texels 6..9. Everything else is floor.
+  EXPECT_NEAR(map.at(8, 8), 0.375f, 1e-6f);
+  EXPECT_NEAR(map.at(6, 9), 0.375f, 1e-6f);
+  EXPECT_NEAR(map.at(0, 0), 0.5f, 1e-6f);
+  EXPECT_NEAR(map.at(15, 3), 0.5f, 1e-6f);
+  EXPECT_NEAR(map.at(5, 8), 0.5f, 1e-6f);
+  EXPECT_FLOAT_EQ(map.world_to_ndc[3][2], -0.25f * -5.0f - 1.25f);  // proj · view, translation z
+  EXPECT_FLOAT_EQ(map.world_to_camera[3][2], -5.0f);
+}
+
+TEST_F(Cli, ShadowmapD16AndViewProjAndGltf) {
+  // view_proj alone, d16 codes, and a glTF file: clip z = y / 4, so the triangle at y = 1 has window depth
+  // 0.625; in NDC it is (−1, 1), (0, 1), (0, −1): the upper-left part of the map.
+  testsupport::GltfFixture f;
+  f.node({{"mesh", f.mesh(f.positions({{-2, 1, 2}, {0, 1, 2}, {0, 1, -2}}))}});
+  f.write_glb(dir, "tri");
+  write(dir / "vp.json", R"({"view_proj": [0.5,0,0,0, 0,0,0.25,0, 0,0.5,0,0, 0,0,0,1]})");
+  const Outcome r = shadowlab(dir, "shadowmap --scene tri.glb --light-matrix vp.json --size 8x8 --format d16 --out t.exr");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const scenes::io::ExrMap map = scenes::io::read_exr_map(dir / "t.exr");
+  EXPECT_EQ(map.depth_format, "d16");
+  EXPECT_FLOAT_EQ(map.at(3, 7), float(std::lround(0.625 * 65535)) / 65535.0f);  // under the triangle
+  EXPECT_EQ(map.at(3, 0), 1.0f);                                                  // outside: cleared
+  EXPECT_EQ(map.at(7, 7), 1.0f);
+}
+
+TEST_F(Cli, ShadowmapRepeatPrintsTimes) {
+  const Outcome r = shadowlab(dir, shadowmap("--repeat 3 --threads 0 --cull back --offset 1.1,4"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("^median [0-9.]+ ms, min [0-9.]+ ms"));
+  EXPECT_TRUE(fs::exists(dir / "d.exr"));
+}
+
+TEST_F(Cli, InspectPrintsHeaderAndPreview) {
+  ASSERT_EQ(shadowlab(dir, shadowmap("")).code, 0);
+  const Outcome r = shadowlab(dir, "inspect d.exr --png preview.png");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("size: 16x16"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("technique: shadowmap"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("coverage: 1.000000"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("depth: min 0.375, max 0.5"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("worldToCamera: [1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, -5, 1]"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("worldToNDC: ["));
+  EXPECT_TRUE(fs::exists(dir / "preview.png"));
+}
+
+TEST_F(Cli, DiffExitCodes) {
+  ASSERT_EQ(shadowlab(dir, shadowmap("")).code, 0);
+  fs::copy_file(dir / "d.exr", dir / "same.exr");
+  ASSERT_EQ(shadowlab(dir, shadowmap("--offset 0,100000")).code, 0);  // d.exr now pushed back
+  fs::rename(dir / "d.exr", dir / "other.exr");
+  Outcome r = shadowlab(dir, "diff same.exr same.exr");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("max 0, mean 0"));
+  r = shadowlab(dir, "diff same.exr other.exr");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("over tolerance 0: 256 of 256 pixels"));
+  EXPECT_EQ(shadowlab(dir, "diff same.exr other.exr --tolerance 0.5").code, 0);
+  ASSERT_EQ(shadowlab(dir, "shadowmap --scene scene.json --light-matrix m.json --size 8x8 --format d32f --out s.exr")
+                .code, 0);
+  expect_bad("diff same.exr s.exr", "s.exr");  // sizes differ
+}
+
+TEST_F(Cli, ListNamesScenesAndTables) {
+  const Outcome r = shadowlab(dir, "list");
+  ASSERT_EQ(r.code, 0);
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("scene +tutorial +[^\n]+"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("technique +shadowmap"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("filter +pcf"));
+  EXPECT_EQ(shadowlab(dir, "--help").code, 0);
+  EXPECT_EQ(shadowlab(dir, "shadowmap --help").code, 0);
+}
+
+TEST_F(Cli, RenderTutorialWritesFrameAndMaps) {
+  const Outcome r = shadowlab(dir, "render tutorial --size 48x32 --shadow-size 64 --threads 2 --out f.png --maps maps --stats");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("frame 1: total [0-9.]+ ms"));
+  EXPECT_TRUE(fs::exists(dir / "f.png"));
+  size_t maps = 0;
+  for (const auto& e : fs::directory_iterator(dir / "maps")) maps += e.path().extension() == ".exr";
+  EXPECT_GE(maps, 1u);
+  EXPECT_EQ(shadowlab(dir, "diff f.png f.png").code, 0);
+}
+
+TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
+  expect_bad(shadowmap("").replace(shadowmap("").find("scene.json"), 10, "missing.json"), "missing.json", "d.exr");
+  write(dir / "trunc.json", R"({"objects": [)");
+  expect_bad(shadowmap("").replace(shadowmap("").find("scene.json"), 10, "trunc.json"), "trunc.json", "d.exr");
+  write(dir / "lying.glb", std::string("glTF\x02\0\0\0\xff\xff\0\0", 12));
+  expect_bad("render lying.glb --out f.png", "lying.glb", "f.png");
+  expect_bad("render teapot --out f.png", "teapot", "f.png");
+  expect_bad("render tutorial --technique raytraced --out f.png", "--technique", "f.png");
+  expect_bad("render tutorial --filter vsm --out f.png", "--filter", "f.png");
+  expect_bad("render tutorial --size 0x10 --out f.png", "--size", "f.png");
+  expect_bad("render tutorial --size 16385x10 --out f.png", "--size", "f.png");
+  expect_bad("render tutorial --shadow-size 0 --out f.png", "--shadow-size", "f.png");
+  expect_bad(shadowmap("--format d8"), "--format", "d.exr");
+  expect_bad(shadowmap("--cull sideways"), "--cull", "d.exr");
+  write(dir / "nan.json", R"({"objects": [{"mesh": {"positions": [0, 0, 0, 1, 0, 0, 0, 1e39, 0], "indices": [0, 1, 2]}}]})");
+  expect_bad(shadowmap("").replace(shadowmap("").find("scene.json"), 10, "nan.json"), "nan.json", "d.exr");
+  write(dir / "empty.json", R"({"objects": [{"mesh": {"positions": [], "indices": []}}]})");
+  expect_bad(shadowmap("").replace(shadowmap("").find("scene.json"), 10, "empty.json"), "empty.json", "d.exr");
+  write(dir / "short.json", R"({"view_proj": [1, 0, 0]})");
+  expect_bad(shadowmap("").replace(shadowmap("").find("m.json"), 6, "short.json"), "short.json", "d.exr");
+  expect_bad("inspect nothing.exr", "nothing.exr");
+  expect_bad("render tutorial --size 16x16 --out nodir/f.png", "--out");
+  expect_bad("diff nothing.exr d.exr", "nothing.exr");
+  expect_bad("shadowmap --scene scene.json --light-matrix m.json --size 4x --format d16 --out d.exr", "--size", "d.exr");
+}
+
+}  // namespace

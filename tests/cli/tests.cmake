@@ -1,0 +1,7 @@
+# End-to-end tests of the shadowlab executable (tests/cli/): they run the built binary, whose path reaches them
+# as SHADOWLAB_CLI. tests/CMakeLists.txt applies SHADOWLAB_TEST_DEFINITIONS and makes the tests depend on it.
+if(TARGET shadowlab)
+  list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/cli_test.cpp)
+  list(APPEND SHADOWLAB_TEST_DEFINITIONS SHADOWLAB_CLI="$<TARGET_FILE:shadowlab>")
+  list(APPEND SHADOWLAB_TEST_LIBS shadowlab::io shadowlab::scenes)
+endif()
