@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <random>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "tests/raster/raster_test_util.h"
 #include "tests/support.h"
 
@@ -129,4 +131,44 @@ TEST(Coverage, DepthOnlyPathMatchesReference) {
       for (int i = 0; i < W; ++i)
         ASSERT_EQ(d.value(i, j) < 1.0f, expected[size_t(j) * W + i] != 0) << "triangle " << iter << " pixel " << i << "," << j;
   }
+}
+
+// From inside a closed, tessellated box every view ray leaves through exactly one face: with no culling each
+// pixel is covered exactly once, through perspective, near-plane clipping of the faces beside and behind the
+// eye, and frustum clipping of the faces that leave the viewport.
+TEST(Coverage, WatertightFromInsideAClosedBox) {
+  Renderer r(testsupport::test_threads());
+  const int W = 160, H = 90;
+  const glm::mat4 proj = glm::perspective(glm::radians(75.0f), float(W) / H, 0.05f, 100.0f);
+  std::vector<glm::vec3> pts;
+  std::vector<uint32_t> idx;
+  const int N = 5;  // each face is an N×N grid of quads
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = -1; side <= 1; side += 2) {
+      const uint32_t base = uint32_t(pts.size());
+      for (int j = 0; j <= N; ++j)
+        for (int i = 0; i <= N; ++i) {
+          glm::vec3 p;
+          p[axis] = float(side);
+          p[(axis + 1) % 3] = -1.0f + 2.0f * i / N;
+          p[(axis + 2) % 3] = -1.0f + 2.0f * j / N;
+          pts.push_back(p * glm::vec3(3.0f, 2.0f, 4.0f));
+        }
+      for (int j = 0; j < N; ++j)
+        for (int i = 0; i < N; ++i) {
+          const uint32_t a = base + j * (N + 1) + i, b = a + 1, c = a + N + 1, d = c + 1;
+          idx.insert(idx.end(), {a, b, d, a, d, c});
+        }
+    }
+  for (glm::vec3 eye : {glm::vec3(0.3f, 0.2f, 0.1f), glm::vec3(-2.5f, 1.5f, 3.0f), glm::vec3(1.0f, -1.0f, -2.0f)})
+    for (glm::vec3 target : {glm::vec3(1, 0.3f, -2), glm::vec3(-1, -1, 1), glm::vec3(0.2f, 5, 0.1f)}) {
+      const glm::mat4 vp = proj * glm::lookAt(eye, eye + target, glm::vec3(0, 1, 0.01f));
+      std::vector<glm::vec4> clip;
+      for (const glm::vec3& p : pts) clip.push_back(vp * glm::vec4(p, 1.0f));
+      const auto counts = rtest::count_coverage(r, W, H, clip, idx);
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+          ASSERT_EQ(counts[size_t(y) * W + x], 1u) << "pixel " << x << "," << y << " eye " << eye.x << " target "
+                                                    << target.x << "," << target.y;
+    }
 }
