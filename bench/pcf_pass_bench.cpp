@@ -1,0 +1,137 @@
+// Shading benchmark of issue 3: a 1920×1080 full-screen pass doing one hardware-PCF lookup per pixel into a
+// 2048² d32f map, and one doing 16 Poisson taps (each a PCF lookup), in ms per frame, shadowlab beside llvmpipe
+// running the same GLSL (tests/gl: pixel (x, y) reads p = ((x+0.5)/W, (y+0.5)/H) with ref = (p.s + p.t)/2, the
+// taps at p + disk[i] · 2 texels, averaged; output grey).
+//   shadowlab_bench_pcf [--threads N] [--smoke] [--no-llvmpipe] [benchmark flags]
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bench/bench_common.h"
+#include "raster/renderer.h"
+#include "shading/shadow_lookup.h"
+#include "shading/texture.h"
+#include "tests/gl/gl_reference.h"
+
+namespace {
+
+constexpr int kMap = 2048;
+
+// The pass's fragment shader, the GLSL of tests/gl written as a C++ shader over one PCF kernel type.
+template <class Kernel, int kTaps>
+struct PcfPassShader {
+  using Vertex = glm::vec4;
+  using Varyings = raster::NoVaryings;
+  Kernel kernel;
+  glm::vec2 inv_target, radius;
+  std::array<glm::vec2, 16> disk;
+  glm::vec4 vertex(const Vertex& v, Varyings&) const { return v; }
+  void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const {
+    for (int l = 0; l < 4; ++l) {
+      const glm::vec2 p = glm::vec2(q.frag_coord[l]) * inv_target;
+      const float ref = 0.5f * (p.x + p.y);
+      float lit;
+      if constexpr (kTaps == 1) {
+        lit = kernel(glm::vec3(p, ref));
+      } else {
+        lit = 0.0f;
+        for (int i = 0; i < kTaps; ++i) lit += kernel(glm::vec3(p + disk[i] * radius, ref));
+        lit *= 1.0f / kTaps;
+      }
+      out.color[l] = glm::vec4(lit, lit, lit, 1.0f);
+    }
+  }
+};
+
+std::map<std::string, double> g_median_ms;
+
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& r : runs)
+      if ((r.run_type == Run::RT_Aggregate && r.aggregate_name == "median") ||
+          (r.run_type == Run::RT_Iteration && !g_median_ms.count(r.run_name.function_name)))
+        g_median_ms[r.run_name.function_name] = r.GetAdjustedRealTime();
+    ConsoleReporter::ReportRuns(runs);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bench::Options opt = bench::parse_options(argc, argv);
+  const int W = opt.smoke ? 480 : 1920, H = opt.smoke ? 270 : 1080;
+
+  // The same random 2048² d32f map for both renderers.
+  raster::DepthTarget map(kMap, kMap, raster::DepthFormat::d32f);
+  std::vector<uint32_t> texels(size_t(kMap) * kMap);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int y = 0; y < kMap; ++y)
+    for (int x = 0; x < kMap; ++x) {
+      const float z = u(rng);
+      map.row<float>(y)[x] = z;
+      texels[size_t(y) * kMap + x] = std::bit_cast<uint32_t>(z);
+    }
+
+  raster::Renderer renderer(opt.threads);
+  raster::ColorTarget color(W, H, raster::ColorFormat::rgba8);
+  const std::vector<glm::vec4> tri = {{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}};  // one full-screen triangle
+  const shading::Texture2D tex = shading::Texture2D::view(map);
+  using Kernel = shading::PcfKernel<shading::TexelFormat::d32f, false>;
+  const Kernel kernel{tex.level(0), 0.0f};
+  std::array<glm::vec2, 16> disk;
+  for (int i = 0; i < 16; ++i) disk[i] = {glref::poisson_disk16()[2 * i], glref::poisson_disk16()[2 * i + 1]};
+
+  std::unique_ptr<glref::Context> gl;
+  if (opt.llvmpipe) {
+    std::string why;
+    gl = glref::Context::create(opt.threads, &why);
+    if (!gl) std::fprintf(stderr, "llvmpipe unavailable (%s): shadowlab only\n", why.c_str());
+  }
+  glref::Context::ShadowSampleQuery q;
+  q.tex_width = q.tex_height = kMap;
+  q.format = raster::DepthFormat::d32f;
+  q.texels = texels;
+
+  auto add_case = [&]<int kTaps>(const std::string& name) {
+    PcfPassShader<Kernel, kTaps> shader{kernel, glm::vec2(1.0f / W, 1.0f / H), glm::vec2(2.0f / kMap), disk};
+    auto* b = benchmark::RegisterBenchmark((name + "/shadowlab").c_str(), [&, shader](benchmark::State& st) {
+      renderer.draw(raster::RenderTargets{nullptr, &color}, raster::DrawState{}, shader, std::span<const glm::vec4>(tri));
+      for (auto _ : st) {
+        const auto t0 = std::chrono::steady_clock::now();
+        renderer.draw(raster::RenderTargets{nullptr, &color}, raster::DrawState{}, shader, std::span<const glm::vec4>(tri));
+        st.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      }
+    });
+    bench::configure(b, opt);
+    if (gl) {
+      auto* g = benchmark::RegisterBenchmark((name + "/llvmpipe").c_str(), [&](benchmark::State& st) {
+        const auto ms = gl->time_pcf_pass(W, H, q, kTaps, int(st.max_iterations));
+        size_t i = 0;
+        for (auto _ : st) st.SetIterationTime(ms[i++ % ms.size()] * 1e-3);
+      });
+      bench::configure(g, opt);
+    }
+  };
+  add_case.operator()<1>("pcf_1_tap");
+  add_case.operator()<16>("poisson_16_taps");
+
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  std::printf("\nFull-screen PCF pass, %dx%d into a %d² d32f map, %d thread(s), medians:\n", W, H, kMap,
+              renderer.threads());
+  std::printf("%-16s %12s %12s %8s\n", "case", "shadowlab ms", "llvmpipe ms", "ratio");
+  for (const char* c : {"pcf_1_tap", "poisson_16_taps"}) {
+    const double sl = g_median_ms[std::string(c) + "/shadowlab"];
+    const double lp = g_median_ms.count(std::string(c) + "/llvmpipe") ? g_median_ms[std::string(c) + "/llvmpipe"] : 0.0;
+    std::printf("%-16s %12.2f %12.2f %7.2fx\n", c, sl, lp, sl > 0 && lp > 0 ? lp / sl : 0.0);
+  }
+  return 0;
+}

@@ -1,0 +1,29 @@
+// Every built-in scene renders through the frame renderer: a frame that is not just the clear colour, finite,
+// with the shadow maps its lights ask for (point and hemispherical lights are not built yet and say so).
+#include <gtest/gtest.h>
+
+#include "cli/frame/frame.h"
+#include "scenes/builtin_scenes.h"
+#include "tests/support.h"
+
+TEST(BuiltinRender, EveryBuiltinSceneRenders) {
+  raster::Renderer renderer(testsupport::test_threads());
+  for (const auto& info : scenes::list_builtin_scenes()) {
+    const scenes::Scene scene = scenes::builtin_scene(info.name);
+    frame::FrameOptions opt;
+    opt.width = 160, opt.height = 90;
+    opt.shadow_size = 256;
+    const frame::Frame f = frame::render_frame(scene, opt, renderer);
+    ASSERT_EQ(f.color.width(), 160) << info.name;
+    const glm::vec4 clear = f.color.read(0, 0);
+    int differ = 0;
+    for (int y = 0; y < 90; ++y)
+      for (int x = 0; x < 160; ++x) differ += f.color.read(x, y) != clear;
+    EXPECT_GT(differ, 160 * 90 / 10) << info.name << ": the scene should fill part of the frame";
+    EXPECT_EQ(f.maps.size(), f.map_names.size()) << info.name;
+    for (const auto& m : f.maps) EXPECT_EQ(m.z.size(), size_t(m.width) * size_t(m.height)) << info.name;
+    bool has_shadowed_light = false;
+    for (const auto& l : scene.lights) has_shadowed_light |= l.type == scenes::LightType::directional || l.type == scenes::LightType::spot;
+    if (has_shadowed_light) EXPECT_FALSE(f.maps.empty()) << info.name;
+  }
+}
