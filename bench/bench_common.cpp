@@ -46,6 +46,21 @@ void configure(benchmark::internal::Benchmark* b, const Options& opt) {
   b->ComputeStatistics("max", [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); });
 }
 
+void MedianReporter::ReportRuns(const std::vector<Run>& runs) {
+  for (const Run& r : runs) {
+    const std::string& name = r.run_name.function_name;
+    if ((r.run_type == Run::RT_Aggregate && r.aggregate_name == "median") ||
+        (r.run_type == Run::RT_Iteration && !median_ms_.count(name)))
+      median_ms_[name] = r.GetAdjustedRealTime();
+  }
+  ConsoleReporter::ReportRuns(runs);
+}
+
+double MedianReporter::median_ms(const std::string& name) const {
+  const auto it = median_ms_.find(name);
+  return it == median_ms_.end() ? 0.0 : it->second;
+}
+
 std::filesystem::path assets_dir() {
   if (const char* env = std::getenv("SHADOWLAB_ASSETS")) return env;
   return std::filesystem::path(SHADOWLAB_SOURCE_DIR) / ".." / "shared" / "assets";

@@ -3,7 +3,9 @@
 // window-space area of a soup).
 #pragma once
 #include <filesystem>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
@@ -25,6 +27,18 @@ Options parse_options(int& argc, char** argv);
 void configure(benchmark::internal::Benchmark* b, const Options& opt);
 
 std::filesystem::path assets_dir();
+
+// Google Benchmark's console table, remembering each benchmark's median real time (or its single run's time
+// when there is one repetition) by name, for the ratio tables the programs print at the end.
+class MedianReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override;
+  // Milliseconds, 0 when the benchmark did not run.
+  double median_ms(const std::string& name) const;
+
+ private:
+  std::map<std::string, double> median_ms_;
+};
 
 // Loads every triangle of a glTF file (through scenes/) and maps it into clip space with an orthographic
 // light looking along −(0.5, 2, 2), fitted to the mesh's bounds, as a directional shadow pass would.

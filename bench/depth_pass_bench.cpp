@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,20 +43,6 @@ std::vector<Workload> make_workloads(bool smoke) {
   for (auto& x : w) x.pixels = bench::window_area(x.soup, kMapSize);
   return w;
 }
-
-std::map<std::string, double> g_median_ms;  // "<case>/<renderer>" -> median ms
-
-// Keeps Google Benchmark's console table and remembers each case's median for the ratio table.
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& r : runs)
-      if ((r.run_type == Run::RT_Aggregate && r.aggregate_name == "median") ||
-          (r.run_type == Run::RT_Iteration && !g_median_ms.count(r.run_name.function_name)))
-        g_median_ms[r.run_name.function_name] = r.GetAdjustedRealTime();
-    ConsoleReporter::ReportRuns(runs);
-  }
-};
 
 }  // namespace
 
@@ -111,7 +96,7 @@ int main(int argc, char** argv) {
       bench::configure(g, opt);
     }
   }
-  RatioReporter reporter;
+  bench::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
 
   std::printf("\nDepth-only pass, %dx%d d32f, %d thread(s), medians:\n", kMapSize, kMapSize, renderer.threads());
@@ -119,8 +104,8 @@ int main(int argc, char** argv) {
               "LP Mtri/s", "SL Gpix/s", "LP Gpix/s", "ratio");
   for (const Workload& w : workloads) {
     const double tris = double(w.soup.indices.size() / 3);
-    const double sl = g_median_ms[w.name + "/shadowlab"];
-    const double lp = g_median_ms.count(w.name + "/llvmpipe") ? g_median_ms[w.name + "/llvmpipe"] : 0.0;
+    const double sl = reporter.median_ms(w.name + "/shadowlab");
+    const double lp = reporter.median_ms(w.name + "/llvmpipe");
     auto rate = [](double n, double ms) { return ms > 0 ? n / (ms * 1e3) : 0.0; };
     std::printf("%-16s %12.2f %12.2f %10.2f %10.2f %10.3f %10.3f %7.2fx\n", w.name.c_str(), sl, lp, rate(tris, sl),
                 rate(tris, lp), rate(w.pixels, sl) * 1e-3, rate(w.pixels, lp) * 1e-3, sl > 0 && lp > 0 ? lp / sl : 0.0);

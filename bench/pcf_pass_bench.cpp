@@ -7,7 +7,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <random>
 #include <string>
@@ -46,19 +45,6 @@ struct PcfPassShader {
       }
       out.color[l] = glm::vec4(lit, lit, lit, 1.0f);
     }
-  }
-};
-
-std::map<std::string, double> g_median_ms;
-
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& r : runs)
-      if ((r.run_type == Run::RT_Aggregate && r.aggregate_name == "median") ||
-          (r.run_type == Run::RT_Iteration && !g_median_ms.count(r.run_name.function_name)))
-        g_median_ms[r.run_name.function_name] = r.GetAdjustedRealTime();
-    ConsoleReporter::ReportRuns(runs);
   }
 };
 
@@ -123,14 +109,14 @@ int main(int argc, char** argv) {
   add_case.operator()<1>("pcf_1_tap");
   add_case.operator()<16>("poisson_16_taps");
 
-  RatioReporter reporter;
+  bench::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   std::printf("\nFull-screen PCF pass, %dx%d into a %d² d32f map, %d thread(s), medians:\n", W, H, kMap,
               renderer.threads());
   std::printf("%-16s %12s %12s %8s\n", "case", "shadowlab ms", "llvmpipe ms", "ratio");
   for (const char* c : {"pcf_1_tap", "poisson_16_taps"}) {
-    const double sl = g_median_ms[std::string(c) + "/shadowlab"];
-    const double lp = g_median_ms.count(std::string(c) + "/llvmpipe") ? g_median_ms[std::string(c) + "/llvmpipe"] : 0.0;
+    const double sl = reporter.median_ms(std::string(c) + "/shadowlab");
+    const double lp = reporter.median_ms(std::string(c) + "/llvmpipe");
     std::printf("%-16s %12.2f %12.2f %7.2fx\n", c, sl, lp, sl > 0 && lp > 0 ? lp / sl : 0.0);
   }
   return 0;
