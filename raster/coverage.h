@@ -80,7 +80,8 @@ struct EdgeRows {
 };
 
 // Rasterizes one triangle within `r` (a rectangle inside one tile) and hands covered pixels to the stage.
-// A row stage (depth-only) has columns(t, x) and row(t, columns, x, y, Mask) entries and gets one 8-lane segment
+// A row stage (depth-only) has columns(t, x) and row(t, columns, x, y, Mask) entries, and block_hidden /
+// block_done around each block (hierarchical depth) and gets one 8-lane segment
 // per row; narrow triangles (at most 8 pixels wide within `r`) take one segment placed inside the tile, others
 // go through 8×8 blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks.
 template <class Stage>
@@ -128,19 +129,20 @@ inline void rasterize(const TriangleSetup& t, const PixelRect& r, const Stage& s
           crosses[k] = lo < 0;
           f_start[k] = f0 + b * row_lo;
         }
-        if (outside) continue;
+        if (outside || stage.block_hidden(t, bx, by)) continue;
         const simd::Mask lanes = simd::Mask::from_bits(lane_bits);
         const auto cols = stage.columns(t, bx);
         if (!crosses[0] && !crosses[1] && !crosses[2]) {  // trivially accepted
           for (int r = row_lo; r <= row_hi; ++r) stage.row(t, cols, bx, by + r, lanes);
-          continue;
+        } else {
+          EdgeRows edges(t, f_start, crosses);
+          for (int r = row_lo; r <= row_hi; ++r) {
+            const simd::Mask m = lanes & edges.inside();
+            if (m.any()) stage.row(t, cols, bx, by + r, m);
+            edges.next_row();
+          }
         }
-        EdgeRows edges(t, f_start, crosses);
-        for (int r = row_lo; r <= row_hi; ++r) {
-          const simd::Mask m = lanes & edges.inside();
-          if (m.any()) stage.row(t, cols, bx, by + r, m);
-          edges.next_row();
-        }
+        stage.block_done(bx, by);
       } else {
         const uint64_t mask = block_coverage(t, bx, by, lane_bits, row_lo, row_hi);
         if (mask) stage.block(t, bx, by, mask);

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "raster/depth_test.h"
+#include "raster/hiz.h"
 #include "raster/primitive.h"
 #include "raster/simd/vec.h"
 #include "raster/target.h"
@@ -34,7 +35,24 @@ inline simd::VecF32 plane_depth_row(const TriangleSetup& t, int32_t bx, int32_t 
 template <DepthFormat Format, DepthFunc Func, bool Write>
 struct DepthOnlyStage {
   using Traits = DepthTraits<Format>;
+  // Hierarchical depth applies to LESS and LEQUAL into d32f: a block whose farthest stored depth is nearer
+  // than everything the triangle has there cannot pass.
+  static constexpr bool kHiZ =
+      Format == DepthFormat::d32f && (Func == DepthFunc::less || Func == DepthFunc::lequal);
   DepthTarget* depth;
+  TileHiZ* hiz = nullptr;  // the tile's bounds, when kHiZ
+
+  bool block_hidden(const TriangleSetup& t, int32_t bx, int32_t by) const {
+    if constexpr (kHiZ) {
+      const float zmin = block_min_depth(t, bx, by), zmax = hiz->farthest(bx, by);
+      return Func == DepthFunc::less ? zmin >= zmax : zmin > zmax;
+    }
+    return false;
+  }
+
+  void block_done(int32_t bx, int32_t by) const {
+    if constexpr (kHiZ && Write) hiz->refresh(*depth, bx, by);
+  }
 
   // The column part of the depth plane for the segment starting at x, computed once per segment.
   simd::VecF32 columns(const TriangleSetup& t, int32_t x) const { return plane_depth_columns(t, x); }

@@ -16,6 +16,7 @@
 #include "raster/depth_stage.h"
 #include "raster/draw_stats.h"
 #include "raster/fragment_stage.h"
+#include "raster/hiz.h"
 #include "raster/interpolation.h"
 #include "raster/outcode.h"
 #include "raster/scratch.h"
@@ -190,16 +191,21 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
 
   dispatch_depth_format(format, [&]<DepthFormat F>() {
     dispatch_depth_func(func, [&]<DepthFunc Func>() {
-      auto run_tiles = [&](auto make_stage) {
+      auto run_tiles = [&](auto make_stage, bool use_hiz = false) {
         pool_.parallel_for(size_t(ntx) * size_t(nty), [&](size_t k) {
           const int tx = tx0 + int(k % size_t(ntx)), ty = ty0 + int(k / size_t(ntx));
           const PixelRect rect{std::max(sp.clip.x0, tx << kTileSizeLog2), std::max(sp.clip.y0, ty << kTileSizeLog2),
                                std::min(sp.clip.x1, ((tx + 1) << kTileSizeLog2) - 1),
                                std::min(sp.clip.y1, ((ty + 1) << kTileSizeLog2) - 1)};
           const size_t tile = size_t(ty) * size_t(grid.tiles_x) + size_t(tx);
+          bool any = false;
+          for (const auto& chp : chunks) any |= chp->bins.offsets[tile] != chp->bins.offsets[tile + 1];
+          if (!any) return;
+          TileHiZ hiz;  // hierarchical depth, for the stages that use it
+          if (use_hiz) hiz.load(*targets.depth, tx << kTileSizeLog2, ty << kTileSizeLog2);
           for (const auto& chp : chunks) {
             const Chunk& ch = *chp;
-            const auto stage = make_stage(ch);
+            const auto stage = make_stage(ch, hiz);
             const uint32_t b = ch.bins.offsets[tile], e = ch.bins.offsets[tile + 1];
             for (uint32_t i = b; i < e; ++i) {
               const TriangleSetup& t = ch.bins.binned[i];
@@ -209,15 +215,17 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
         });
       };
       if constexpr (kShaded) {
-        run_tiles([&](const Chunk& ch) {
+        run_tiles([&](const Chunk& ch, TileHiZ&) {
           return ShadedStage<Shader, F, Func>{&shader, ch.interps.view<TriangleInterp<V>>(), test ? targets.depth : nullptr,
                                                targets.color, depth_write, state.color_write, state.blend};
         });
       } else if (targets.depth && test) {
-        if (depth_write)
-          run_tiles([&](const Chunk&) { return DepthOnlyStage<F, Func, true>{targets.depth}; });
-        else
-          run_tiles([&](const Chunk&) { return DepthOnlyStage<F, Func, false>{targets.depth}; });
+        auto depth_only = [&]<bool kWrite>() {
+          using Stage = DepthOnlyStage<F, Func, kWrite>;
+          run_tiles([&](const Chunk&, TileHiZ& hiz) { return Stage{targets.depth, &hiz}; }, Stage::kHiZ);
+        };
+        if (depth_write) depth_only.template operator()<true>();
+        else depth_only.template operator()<false>();
       }
     });
   });
