@@ -25,6 +25,9 @@ struct RenderArgs {
   int threads = -1;
   int frames = 1;
   bool stats = false;
+  std::optional<bool> cull_front;  // --cull-front / --no-cull-front
+  int poisson_taps = 0;            // 0: the light's setting
+  std::optional<bool> pcf_taps;    // --pcf-taps / --no-pcf-taps
 };
 
 // An override's name is checked against the scene module's table before anything is loaded.
@@ -41,6 +44,8 @@ int run_render(const RenderArgs& a) {
              scenes::technique_names());
   check_name(a.filter, "--filter", "filter", scenes::parse_filter(a.filter).has_value(), scenes::filter_names());
   check_name(a.bias, "--bias", "bias mode", scenes::parse_bias_mode(a.bias).has_value(), scenes::bias_mode_names());
+  if (a.poisson_taps != 0 && a.poisson_taps != 4 && a.poisson_taps != 16)
+    throw CliError("--poisson-taps", std::to_string(a.poisson_taps) + " is not 4 or 16");
   const std::optional<int> shadow_size =
       a.shadow_size_option->count() ? std::optional<int>(check_side(a.shadow_size, "--shadow-size")) : std::nullopt;
   if (a.threads < -1) throw CliError("--threads", "expected 0 or more threads");
@@ -65,6 +70,9 @@ int run_render(const RenderArgs& a) {
   if (!a.filter.empty()) options.filter = a.filter;
   if (!a.bias.empty()) options.bias = a.bias;
   options.shadow_size = shadow_size;
+  options.cull_front = a.cull_front;
+  options.pcf_taps = a.pcf_taps;
+  if (a.poisson_taps != 0) options.poisson_taps = a.poisson_taps;
 
   raster::Renderer renderer(a.threads);
   Progress progress;
@@ -115,6 +123,11 @@ Command add_render_command(CLI::App& parent) {
   app->add_option("--frames", args->frames, "Render the frame N times (timing); the last one is written");
   app->add_flag("--stats", args->stats, "Print per-frame timings and triangle counts");
   app->add_option("--out", args->out, "Output PNG (default frame.png)");
+  app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
+  app->add_flag_callback("--no-cull-front", [args] { args->cull_front = false; }, "Render front faces into the maps");
+  app->add_option("--poisson-taps", args->poisson_taps, "Poisson filters: 4 or 16 taps");
+  app->add_flag_callback("--pcf-taps", [args] { args->pcf_taps = true; }, "Poisson taps are hardware-PCF lookups");
+  app->add_flag_callback("--no-pcf-taps", [args] { args->pcf_taps = false; }, "Poisson taps are single compares");
   app->add_option("--maps", args->maps, "Also write every shadow map as DIR/<map name>.exr");
   return {app, [args] { return run_render(*args); }};
 }

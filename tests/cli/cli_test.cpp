@@ -172,6 +172,14 @@ TEST_F(Cli, RenderTutorialWritesFrameAndMaps) {
   EXPECT_EQ(shadowlab(dir, "diff f.png f.png").code, 0);
 }
 
+// The tutorial's knobs reach the frame: front faces in the map with no bias show acne, back faces do not.
+TEST_F(Cli, RenderCullFrontAndPoissonTapsChangeTheFrame) {
+  const std::string base = "render tutorial --size 96x54 --shadow-size 256 --bias none --filter poisson --poisson-taps 16";
+  ASSERT_EQ(shadowlab(dir, base + " --cull-front --out back.png").code, 0);
+  ASSERT_EQ(shadowlab(dir, base + " --no-cull-front --out front.png").code, 0);
+  EXPECT_EQ(shadowlab(dir, "diff back.png front.png --tolerance 0.05").code, 1);
+}
+
 TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
   expect_bad(shadowmap("").replace(shadowmap("").find("scene.json"), 10, "missing.json"), "missing.json", "d.exr");
   write(dir / "trunc.json", R"({"objects": [)");
@@ -184,6 +192,7 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
   expect_bad("render tutorial --size 0x10 --out f.png", "--size", "f.png");
   expect_bad("render tutorial --size 16385x10 --out f.png", "--size", "f.png");
   expect_bad("render tutorial --shadow-size 0 --out f.png", "--shadow-size", "f.png");
+  expect_bad("render tutorial --poisson-taps 5 --out f.png", "--poisson-taps", "f.png");
   expect_bad(shadowmap("--format d8"), "--format", "d.exr");
   expect_bad(shadowmap("--cull sideways"), "--cull", "d.exr");
   write(dir / "nan.json", R"({"objects": [{"mesh": {"positions": [0, 0, 0, 1, 0, 0, 0, 1e39, 0], "indices": [0, 1, 2]}}]})");
