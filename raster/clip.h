@@ -61,19 +61,6 @@ inline float plane_distance(const ClipPlane& p, const glm::vec4& v) {
   return p.n.x * v.x + p.n.y * v.y + p.n.z * v.z + p.n.w * v.w + p.bias;
 }
 
-// Bit k set when the vertex is outside plane k (NaN counts as outside), and bit `count` when w is not strictly
-// positive: such a vertex can lie inside every plane only at the eye (x = y = z = w = 0 when not clamping), and
-// the clipper rejects any polygon keeping one (llvmpipe would divide by zero there).
-inline unsigned outcode(const ClipPlanes& cp, const glm::vec4& v) {
-  unsigned code = 0;
-  for (int k = 0; k < cp.count; ++k) {
-    const float d = plane_distance(cp.planes[k], v);
-    if (!(d >= 0.0f)) code |= 1u << k;  // NaN counts as outside
-  }
-  if (!(v.w > 0.0f)) code |= 1u << cp.count;
-  return code;
-}
-
 // llvmpipe's interp() (draw_pipe_clip.c): LINTERP(t, a, b) = a + t·(b − a) for every component of the clip-space
 // position and of the varyings, each operation rounded.
 template <class V>

@@ -27,11 +27,6 @@ inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, si
   return simd::min(simd::max(z, VecF32::splat(0.0f)), VecF32::splat(1.0f));
 }
 
-inline simd::VecF32 plane_depth_row(const TriangleSetup& t, int32_t bx, int32_t y) {
-  using simd::VecF32;
-  return plane_depth_clamped(plane_depth_columns(t, bx), VecF32::splat(t.dzdy), VecF32::splat(t.z_offset), y);
-}
-
 template <DepthFormat Format, DepthFunc Func, bool Write>
 struct DepthOnlyStage {
   using Traits = DepthTraits<Format>;

@@ -41,7 +41,7 @@ struct ScalarDepth {
 
 inline float clamp01(float z) { return z < 0.0f ? 0.0f : (z > 1.0f ? 1.0f : z); }
 
-// Same operation order as plane_depth_row (depth_stage.h), one pixel.
+// Same operation order as plane_depth_columns + plane_depth_clamped (depth_stage.h), one pixel.
 inline float plane_depth(const TriangleSetup& t, int32_t x, int32_t y) {
   const float zcol = std::fma(t.dzdx, float(x), t.z_a0);
   return clamp01(std::fma(t.dzdy, float(y), zcol) + t.z_offset);

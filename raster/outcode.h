@@ -1,6 +1,5 @@
 // The vertex stage's clip test, eight planes at once: one lane per plane of ClipPlanes (unused lanes always
-// pass), so the per-vertex cost is four fused multiply-adds and a compare whatever planes a draw has. Gives
-// the same bits as outcode() in clip.h.
+// pass), so the per-vertex cost is four multiply-adds and a compare whatever planes a draw has.
 #pragma once
 #include <glm/vec4.hpp>
 
@@ -25,7 +24,9 @@ class OutcodeTester {
     nw_ = simd::VecF32::load(nw), bias_ = simd::VecF32::load(b);
   }
 
-  // Bit k: outside plane k (NaN counts as outside); bit `count`: w not strictly positive.
+  // Bit k: outside plane k (NaN counts as outside); bit `count`: w not strictly positive — such a vertex can lie
+  // inside every plane only at the eye (x = y = z = w = 0 when not clamping), and the clipper rejects any
+  // polygon keeping one (llvmpipe would divide by zero there).
   unsigned operator()(const glm::vec4& v) const {
     using simd::VecF32;
     // Same operation order as plane_distance(): ((nx·x + ny·y) + nz·z) + nw·w + bias, separately rounded.
