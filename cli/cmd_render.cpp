@@ -28,7 +28,16 @@ struct RenderArgs {
   std::optional<bool> cull_front;  // --cull-front / --no-cull-front
   int poisson_taps = 0;            // 0: the light's setting
   std::optional<bool> pcf_taps;    // --pcf-taps / --no-pcf-taps
+  std::string stratify, fit;
+  // Value overrides, set only when given on the command line.
+  std::optional<float> poisson_spread, bias_constant, bias_slope, bias_slope_max, offset_factor, offset_units,
+      normal_offset;
 };
+
+// A float option that stays unset unless given (CLI11 checks that the text is a number).
+void add_value(CLI::App* app, const char* name, std::optional<float>& target, const char* help) {
+  app->add_option_function<float>(name, [&target](const float& v) { target = v; }, help);
+}
 
 // An override's name is checked against the scene module's table before anything is loaded.
 void check_name(const std::string& value, const std::string& option, const char* what, bool known,
@@ -73,6 +82,15 @@ int run_render(const RenderArgs& a) {
   options.cull_front = a.cull_front;
   options.pcf_taps = a.pcf_taps;
   if (a.poisson_taps != 0) options.poisson_taps = a.poisson_taps;
+  if (!a.stratify.empty()) options.stratify = a.stratify;
+  if (!a.fit.empty()) options.fit = a.fit;
+  options.poisson_spread = a.poisson_spread;
+  options.bias_constant = a.bias_constant;
+  options.bias_slope = a.bias_slope;
+  options.bias_slope_max = a.bias_slope_max;
+  options.offset_factor = a.offset_factor;
+  options.offset_units = a.offset_units;
+  options.normal_offset = a.normal_offset;
 
   raster::Renderer renderer(a.threads);
   Progress progress;
@@ -128,6 +146,16 @@ Command add_render_command(CLI::App& parent) {
   app->add_option("--poisson-taps", args->poisson_taps, "Poisson filters: 4 or 16 taps");
   app->add_flag_callback("--pcf-taps", [args] { args->pcf_taps = true; }, "Poisson taps are hardware-PCF lookups");
   app->add_flag_callback("--no-pcf-taps", [args] { args->pcf_taps = false; }, "Poisson taps are single compares");
+  app->add_option("--stratify", args->stratify, "Stratified Poisson seed: pixel or world (position rounded to 1 mm)");
+  app->add_option("--fit", args->fit, "Directional light box: auto (fitted to receivers and casters) or fixed");
+  RenderArgs& r = *args;
+  add_value(app, "--poisson-spread", r.poisson_spread, "Poisson disc radius in map texture coordinates (1/700)");
+  add_value(app, "--bias-constant", r.bias_constant, "constant bias: window depth subtracted (0.005)");
+  add_value(app, "--bias-slope", r.bias_slope, "slope bias: scale of tan(acos(N.L)) (0.005)");
+  add_value(app, "--bias-slope-max", r.bias_slope_max, "slope bias: upper clamp (0.01)");
+  add_value(app, "--offset-factor", r.offset_factor, "offset bias: glPolygonOffset factor (1.1)");
+  add_value(app, "--offset-units", r.offset_units, "offset bias: glPolygonOffset units (4)");
+  add_value(app, "--normal-offset", r.normal_offset, "normal bias: receiver moved along its normal, metres (0.02)");
   app->add_option("--maps", args->maps, "Also write every shadow map as DIR/<map name>.exr");
   return {app, [args] { return run_render(*args); }};
 }

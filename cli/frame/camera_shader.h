@@ -1,7 +1,9 @@
 // The camera pass's shader: world position and normal as perspective-correct varyings, Blinn-Phong per light
 // (shading/lighting.h) with the ambient term untouched and diffuse + specular scaled by the light's shadow
-// visibility. A template over the shadow filter, so the filter is chosen once per draw (dispatch_filter).
+// visibility. Each light is read with its own technique and filter, chosen once per quad (light_visibility).
 #pragma once
+#include <array>
+#include <cstdint>
 #include <span>
 
 #include <glm/geometric.hpp>
@@ -19,12 +21,25 @@ struct CameraVertex {
   glm::vec3 normal;
 };
 
-// One light as the camera pass reads it; `reader` is used only when `shadowed`.
+// How a light's shadow is read in the camera pass. Each kind has a reader snapshotted once per frame and a
+// batch visibility function (per quad) that makes its run-time choices (filter, lookup) once per batch.
+enum class ShadowRead : uint8_t { none, classic };
+
+// One light as the camera pass reads it; the reader matching `read` is used.
 struct LightRecord {
   shading::Light light;
-  bool shadowed = false;
-  shading::tech::ClassicReader reader;
+  ShadowRead read = ShadowRead::none;
+  shading::tech::ClassicReader classic;
 };
+
+// Visibility of up to four points of a quad from one light; 1 where the light casts no shadow.
+inline void light_visibility(const LightRecord& l, std::span<const shading::tech::ShadowQuery> q, std::span<float> vis) {
+  switch (l.read) {
+    case ShadowRead::classic: shading::tech::classic_visibility(l.classic, q, vis); return;
+    case ShadowRead::none: break;
+  }
+  for (float& v : vis) v = 1.0f;
+}
 
 // Per-draw (per instance) uniforms besides the filter.
 struct SurfaceUniforms {
@@ -37,7 +52,6 @@ struct SurfaceUniforms {
   bool receives_shadows = true;
 };
 
-template <class Filter, bool kPcfTaps>
 struct CameraShader {
   using Vertex = CameraVertex;
   struct Varyings {
@@ -55,31 +69,44 @@ struct CameraShader {
     return u.view_proj * w;
   }
 
-  glm::vec3 shade(glm::vec3 p, glm::vec3 n, glm::vec2 frag) const {
-    const glm::vec3 v = glm::normalize(u.eye - p);
-    glm::vec3 c(0.0f);
-    for (const LightRecord& l : lights) {
-      const shading::LightSample ls = shading::sample_light(l.light, p);
-      const shading::DirectLight d = shading::direct_light(u.material, ls, n, v);
-      c += u.material.albedo * l.light.color * u.material.ambient;
-      if (d.diffuse == glm::vec3(0.0f) && d.specular == glm::vec3(0.0f)) continue;
-      const float vis = l.shadowed && u.receives_shadows
-                            ? shading::tech::classic_visibility<Filter, kPcfTaps>(l.reader, p, n, frag)
-                            : 1.0f;
-      c += vis * (d.diffuse + d.specular * u.specular_color);
-    }
-    return c;
-  }
-
+  // Lights are the outer loop so that each light's reader makes its choices once per quad; helper lanes are
+  // neither shaded nor looked up.
   void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const {
+    std::array<shading::tech::ShadowQuery, 4> pts;
+    std::array<glm::vec3, 4> view, color;
+    std::array<int, 4> lane_of;
+    size_t n = 0;
     for (int lane = 0; lane < 4; ++lane) {
       if (((q.live >> lane) & 1u) == 0) continue;  // helper lane: never written
       const Varyings& in = q.in[size_t(lane)];
-      glm::vec3 n = glm::normalize(in.normal);
-      if (!q.front_facing) n = -n;  // double-sided surfaces light their back side
+      glm::vec3 nrm = glm::normalize(in.normal);
+      if (!q.front_facing) nrm = -nrm;  // double-sided surfaces light their back side
       const glm::vec4& fc = q.frag_coord[size_t(lane)];
-      out.color[size_t(lane)] = glm::vec4(shade(in.world, n, glm::vec2(fc.x, fc.y)), 1.0f);
+      pts[n] = {in.world, nrm, glm::vec2(fc.x, fc.y)};
+      view[n] = glm::normalize(u.eye - in.world);
+      color[n] = glm::vec3(0.0f);
+      lane_of[n++] = lane;
     }
+    for (const LightRecord& l : lights) {
+      std::array<shading::DirectLight, 4> d;
+      std::array<shading::tech::ShadowQuery, 4> lit_pts;
+      std::array<size_t, 4> lit_of;
+      size_t m = 0;
+      for (size_t i = 0; i < n; ++i) {
+        d[i] = shading::direct_light(u.material, shading::sample_light(l.light, pts[i].p), pts[i].n, view[i]);
+        color[i] += u.material.albedo * l.light.color * u.material.ambient;
+        if (d[i].diffuse == glm::vec3(0.0f) && d[i].specular == glm::vec3(0.0f)) continue;
+        lit_pts[m] = pts[i];
+        lit_of[m++] = i;
+      }
+      std::array<float, 4> vis{1.0f, 1.0f, 1.0f, 1.0f};
+      if (u.receives_shadows && m > 0) light_visibility(l, std::span(lit_pts.data(), m), std::span(vis.data(), m));
+      for (size_t k = 0; k < m; ++k) {
+        const size_t i = lit_of[k];
+        color[i] += vis[k] * (d[i].diffuse + d[i].specular * u.specular_color);
+      }
+    }
+    for (size_t i = 0; i < n; ++i) out.color[size_t(lane_of[i])] = glm::vec4(color[i], 1.0f);
   }
 };
 

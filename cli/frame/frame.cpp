@@ -1,5 +1,5 @@
 // render_frame: per light, plan and build its shadow maps through the technique layer; then the camera pass,
-// one draw per instance, with CameraShader<Filter> chosen once for the frame (see frame.h).
+// one draw per instance, each light read with its own technique and filter (see frame.h).
 #include "cli/frame/frame.h"
 
 #include <chrono>
@@ -104,33 +104,22 @@ Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, rast
   // ---- Camera pass.
   const auto t_camera = Clock::now();
   std::vector<LightRecord> records;
-  const ResolvedLight* first_shadowed = nullptr;
   for (const auto& lm : lights) {
     LightRecord rec;
     rec.light = lm->resolved.light;
-    rec.shadowed = lm->resolved.shadowed;
-    if (rec.shadowed) {
-      rec.reader = tech::make_classic_reader(lm->set, lm->resolved.classic, lm->resolved.settings);
-      if (!first_shadowed) first_shadowed = &lm->resolved;
+    if (lm->resolved.shadowed) {
+      rec.read = ShadowRead::classic;
+      rec.classic = tech::make_classic_reader(lm->set, lm->resolved.classic, lm->resolved.settings);
     }
     records.push_back(rec);
   }
-  // One filter for the whole pass, chosen here once: the first shadowed light's (the others keep their own
-  // bias, taps and spread).
-  const tech::FilterKind filter = first_shadowed ? first_shadowed->settings.filter : tech::FilterKind::hard;
-  const bool pcf_taps = first_shadowed && first_shadowed->settings.filter_params.pcf_taps;
-  if (first_shadowed)
-    for (const auto& lm : lights)
-      if (lm->resolved.shadowed && lm->resolved.settings.filter != filter)
-        frame.notes.push_back("lights with different filters: every light is read with '" +
-                              std::string(tech::to_string(filter)) + "'");
 
   raster::DepthTarget depth(options.width, options.height, raster::DepthFormat::d24);
   depth.clear(1.0f);
   frame.color.clear(options.clear_color);
   std::vector<std::vector<CameraVertex>> mesh_vertices(scene.meshes.size());
-  tech::dispatch_filter(filter, pcf_taps, [&]<class F, bool kPcf>() {
-    CameraShader<F, kPcf> shader;
+  {
+    CameraShader shader;
     shader.lights = records;
     shader.u.view_proj = view_proj;
     shader.u.eye = camera.position;
@@ -148,7 +137,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, rast
       frame.stats.draws += renderer.draw(raster::RenderTargets{&depth, &frame.color}, s, shader,
                                          std::span<const CameraVertex>(mesh_vertices[inst.mesh]), mesh.indices);
     }
-  });
+  }
   frame.stats.camera_ms = ms_since(t_camera);
   return frame;
 }

@@ -26,6 +26,11 @@ struct FrameOptions {
   std::optional<bool> cull_front;        // back faces only into the map
   std::optional<int> poisson_taps;       // 4 or 16
   std::optional<bool> pcf_taps;          // Poisson taps are hardware 2×2 PCF lookups
+  std::optional<float> poisson_spread;   // Poisson disc radius in map texture coordinates (> 0)
+  std::optional<std::string> stratify;   // stratified seed: "pixel" or "world" (world position rounded to 1 mm)
+  std::optional<std::string> fit;        // directional light box: "auto" (fitted) or "fixed" (the tutorial's box)
+  // Bias values (the mode is `bias`); each must be finite and >= 0 (offset factor/units: finite).
+  std::optional<float> bias_constant, bias_slope, bias_slope_max, offset_factor, offset_units, normal_offset;
   glm::vec4 clear_color{0.0f, 0.0f, 0.4f, 1.0f};  // the tutorial's glClearColor (alpha 1)
 };
 

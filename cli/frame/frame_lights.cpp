@@ -1,9 +1,12 @@
 // Light and shadow-setting resolution for the frame renderer (see frame_lights.h).
 #include "cli/frame/frame_lights.h"
 
-#include <glm/trigonometric.hpp>
+#include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
+
+#include <glm/trigonometric.hpp>
 
 namespace frame {
 
@@ -34,6 +37,24 @@ bool param_is(const scenes::ShadowSettings& s, const std::string& key, std::stri
   if (const auto* str = std::get_if<std::string>(&it->second)) return *str == value;
   if (const auto* b = std::get_if<bool>(&it->second)) return *b == (value == "true");
   return false;
+}
+
+// An override if given, else the light's value; checked finite and >= 0 (> 0 with `positive`) unless `signed_ok`.
+float override_value(std::optional<float> given, float light_value, const char* option, bool positive = false,
+                     bool signed_ok = false) {
+  const float v = given.value_or(light_value);
+  if (!std::isfinite(v) || (!signed_ok && (positive ? !(v > 0.0f) : v < 0.0f)))
+    throw std::invalid_argument(std::string(option) + ": " + std::to_string(v) + " must be a finite number" +
+                                (signed_ok ? "" : positive ? " above 0" : " of 0 or more"));
+  return v;
+}
+
+// A two-way choice: false for `first`, true for `second`.
+bool choice(const std::string& value, const char* option, std::string_view first, std::string_view second) {
+  if (value == first) return false;
+  if (value == second) return true;
+  throw std::invalid_argument(std::string(option) + ": unknown value '" + value + "' (known: " + std::string(first) +
+                              ", " + std::string(second) + ")");
 }
 
 }  // namespace
@@ -71,10 +92,17 @@ ResolvedLight resolve_light(const scenes::Light& light, const FrameOptions& o) {
   c.filter_params.taps = o.poisson_taps.value_or(int(s.poisson_taps));
   if (c.filter_params.taps != 4 && c.filter_params.taps != 16)
     throw std::invalid_argument("--poisson-taps: " + std::to_string(c.filter_params.taps) + " is not 4 or 16");
-  c.filter_params.spread = s.poisson_spread;
+  c.filter_params.spread = override_value(o.poisson_spread, s.poisson_spread, "--poisson-spread", true);
   c.filter_params.pcf_taps = o.pcf_taps.value_or(param_is(s, "pcf_taps", "true"));
-  c.filter_params.stratify_world = param_is(s, "stratify", "world");
-  r.fixed_box = param_is(s, "fit", "fixed");
+  c.filter_params.stratify_world = o.stratify ? choice(*o.stratify, "--stratify", "pixel", "world")
+                                              : param_is(s, "stratify", "world");
+  r.fixed_box = o.fit ? choice(*o.fit, "--fit", "auto", "fixed") : param_is(s, "fit", "fixed");
+  c.bias.constant = override_value(o.bias_constant, c.bias.constant, "--bias-constant");
+  c.bias.slope = override_value(o.bias_slope, c.bias.slope, "--bias-slope");
+  c.bias.slope_max = override_value(o.bias_slope_max, c.bias.slope_max, "--bias-slope-max");
+  c.bias.offset_factor = override_value(o.offset_factor, c.bias.offset_factor, "--offset-factor", false, true);
+  c.bias.offset_units = override_value(o.offset_units, c.bias.offset_units, "--offset-units", false, true);
+  c.bias.normal_offset = override_value(o.normal_offset, c.bias.normal_offset, "--normal-offset");
 
   const bool classic_light = light.type == scenes::LightType::directional || light.type == scenes::LightType::spot;
   r.shadowed = r.technique == "shadowmap" && classic_light;

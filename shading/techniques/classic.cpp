@@ -40,6 +40,7 @@ ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& l
   r.position = light.position;
   r.direction = light.direction;
   r.bias = s.bias;
+  r.filter_kind = s.filter;
   r.filter = s.filter_params;
   r.maps = MapLookups{ShadowLookup2D(tex, nearest), ShadowLookup2D(tex, linear)};
   return r;

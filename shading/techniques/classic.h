@@ -1,7 +1,7 @@
 // The classic shadow map of the tutorial: one pass per light, orthographic for a directional light and
 // perspective for a spot. Three steps, each on plain data: plan (layout + light matrices), build (the depth
 // pass, with the `offset` bias and the back-face option as its draw state), read (a ClassicReader snapshotted
-// once per draw and classic_visibility<Filter> per fragment: bias, projection, filter).
+// once per draw and classic_visibility per fragment or per quad: bias, projection, filter).
 #pragma once
 #include <cmath>
 #include <optional>
@@ -48,6 +48,7 @@ struct ClassicReader {
   LightKind kind = LightKind::directional;
   glm::vec3 position{0.0f}, direction{0.0f, -1.0f, 0.0f};
   BiasParams bias;
+  FilterKind filter_kind = FilterKind::pcf;
   FilterParams filter;
   MapLookups maps;
 };
@@ -88,6 +89,13 @@ float classic_visibility(const ClassicReader& r, glm::vec3 p, glm::vec3 n, glm::
     if (!(ctx.st.x >= 0.0f && ctx.st.x <= 1.0f && ctx.st.y >= 0.0f && ctx.st.y <= 1.0f)) return 0.0f;
   }
   return Filter{}(Taps<kPcfTaps>{&r.maps}, ctx, r.filter);
+}
+
+// The reader's own filter for a batch of points (a quad): the run-time choice is made once for the batch.
+inline void classic_visibility(const ClassicReader& r, std::span<const ShadowQuery> q, std::span<float> vis) {
+  dispatch_filter(r.filter_kind, r.filter.pcf_taps, [&]<class F, bool kPcf>() {
+    for (size_t i = 0; i < q.size(); ++i) vis[i] = classic_visibility<F, kPcf>(r, q[i].p, q[i].n, q[i].frag);
+  });
 }
 
 }  // namespace shading::tech

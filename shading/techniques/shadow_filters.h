@@ -1,7 +1,7 @@
 // How a classic map is read: the filters as compile-time types. Each takes a Taps object (one compare per tap,
 // or one hardware 2×2 PCF lookup per tap) and a SampleContext (map coordinates, reference depth, pixel and
-// world position) and returns the visibility in [0, 1]. The camera shader is a template over the filter, so the
-// choice among them is made once per draw (dispatch_filter), never per pixel.
+// world position) and returns the visibility in [0, 1]. The run-time choice (dispatch_filter) is made once per
+// batch of points, e.g. per light and 2×2 quad, so each light of a frame can keep its own filter.
 #pragma once
 #include <cstdint>
 
@@ -20,6 +20,13 @@ struct SampleContext {
   float ref;         // reference depth, bias already applied
   glm::vec2 frag;    // gl_FragCoord.xy
   glm::vec3 world;   // world position (before any normal offset)
+};
+
+// One point a shader asks a light's visibility for: world position, unit normal and window position.
+struct ShadowQuery {
+  glm::vec3 p;
+  glm::vec3 n;
+  glm::vec2 frag;
 };
 
 // The two lookups a filter can be built from, over the same map: `nearest` (one compare, NEAREST) and

@@ -180,6 +180,18 @@ TEST_F(Cli, RenderCullFrontAndPoissonTapsChangeTheFrame) {
   EXPECT_EQ(shadowlab(dir, "diff back.png front.png --tolerance 0.05").code, 1);
 }
 
+// The bias values and the Poisson spread are settable: a larger constant bias removes acne, a wider disc
+// softens the penumbra.
+TEST_F(Cli, RenderBiasValuesAndSpreadChangeTheFrame) {
+  const std::string base = "render tutorial --size 96x54 --shadow-size 256 --threads 2";
+  ASSERT_EQ(shadowlab(dir, base + " --bias constant --bias-constant 0 --filter hard --out c0.png").code, 0);
+  ASSERT_EQ(shadowlab(dir, base + " --bias constant --bias-constant 0.01 --filter hard --out c1.png").code, 0);
+  EXPECT_EQ(shadowlab(dir, "diff c0.png c1.png --tolerance 0.05").code, 1);
+  ASSERT_EQ(shadowlab(dir, base + " --filter poisson --out s0.png").code, 0);
+  ASSERT_EQ(shadowlab(dir, base + " --filter poisson --poisson-spread 0.01 --out s1.png").code, 0);
+  EXPECT_EQ(shadowlab(dir, "diff s0.png s1.png").code, 1);
+}
+
 TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
   expect_bad(shadowmap("").replace(shadowmap("").find("scene.json"), 10, "missing.json"), "missing.json", "d.exr");
   write(dir / "trunc.json", R"({"objects": [)");
@@ -193,6 +205,10 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
   expect_bad("render tutorial --size 16385x10 --out f.png", "--size", "f.png");
   expect_bad("render tutorial --shadow-size 0 --out f.png", "--shadow-size", "f.png");
   expect_bad("render tutorial --poisson-taps 5 --out f.png", "--poisson-taps", "f.png");
+  expect_bad("render tutorial --poisson-spread -1 --out f.png", "--poisson-spread", "f.png");
+  expect_bad("render tutorial --bias-constant nan --out f.png", "--bias-constant", "f.png");
+  expect_bad("render tutorial --stratify diagonal --out f.png", "--stratify", "f.png");
+  expect_bad("render tutorial --fit loose --out f.png", "--fit", "f.png");
   expect_bad(shadowmap("--format d8"), "--format", "d.exr");
   expect_bad(shadowmap("--cull sideways"), "--cull", "d.exr");
   write(dir / "nan.json", R"({"objects": [{"mesh": {"positions": [0, 0, 0, 1, 0, 0, 0, 1e39, 0], "indices": [0, 1, 2]}}]})");

@@ -7,6 +7,7 @@ if(TARGET shadowlab)
 endif()
 # Whole-frame rendering of every built-in scene (cli/frame/).
 if(TARGET shadowlab::frame)
-  list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/frame/builtin_render_test.cpp)
+  list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/frame/builtin_render_test.cpp
+       ${CMAKE_CURRENT_LIST_DIR}/frame/frame_lights_test.cpp)
   list(APPEND SHADOWLAB_TEST_LIBS shadowlab::frame)
 endif()

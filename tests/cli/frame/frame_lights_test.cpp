@@ -1,0 +1,97 @@
+// Per-light shadow settings in the frame renderer (cli/frame/frame_lights.h): every light is read with its own
+// filter, and the command-line value overrides reach the technique layer or are refused naming the option.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "cli/frame/frame.h"
+#include "cli/frame/frame_lights.h"
+#include "scenes/builtin_scenes.h"
+#include "tests/support.h"
+
+namespace {
+
+size_t pixels_differing(const raster::ColorTarget& a, const raster::ColorTarget& b) {
+  size_t n = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) n += a.read(x, y) != b.read(x, y);
+  return n;
+}
+
+// The tutorial's sun plus the tutorial-spot scene's spot, both casting shadows.
+scenes::Scene two_lights() {
+  scenes::Scene s = scenes::builtin_scene("tutorial");
+  s.lights.push_back(scenes::builtin_scene("tutorial-spot").lights.at(0));
+  return s;
+}
+
+}  // namespace
+
+// If one filter were used for the whole frame (the first light's or the last's), the mixed frame would equal one
+// of the uniform frames. It must differ from all three other assignments.
+TEST(FrameLights, EachLightIsReadWithItsOwnFilter) {
+  raster::Renderer renderer(testsupport::test_threads());
+  scenes::Scene scene = two_lights();
+  frame::FrameOptions opt;
+  opt.width = 192, opt.height = 108;
+  opt.shadow_size = 256;
+  auto render = [&](scenes::ShadowFilter a, scenes::ShadowFilter b) {
+    scene.lights[0].shadow.filter = a;
+    scene.lights[1].shadow.filter = b;
+    frame::Frame f = frame::render_frame(scene, opt, renderer);
+    EXPECT_EQ(f.maps.size(), 2u);
+    return std::move(f.color);
+  };
+  using F = scenes::ShadowFilter;
+  const raster::ColorTarget hh = render(F::hard, F::hard), hp = render(F::hard, F::pcf),
+                            ph = render(F::pcf, F::hard), pp = render(F::pcf, F::pcf);
+  EXPECT_GT(pixels_differing(hp, hh), 0u);
+  EXPECT_GT(pixels_differing(hp, pp), 0u);
+  EXPECT_GT(pixels_differing(hp, ph), 0u);
+  EXPECT_GT(pixels_differing(ph, hh), 0u);
+}
+
+TEST(FrameLights, OverridesReachTheTechniqueSettings) {
+  const scenes::Light sun = scenes::builtin_scene("tutorial").lights.at(0);
+  frame::FrameOptions o;
+  o.bias_constant = 0.02f, o.bias_slope = 0.003f, o.bias_slope_max = 0.05f;
+  o.offset_factor = -2.0f, o.offset_units = 8.0f, o.normal_offset = 0.1f;
+  o.poisson_spread = 1.0f / 350.0f, o.stratify = "world", o.fit = "fixed";
+  const frame::ResolvedLight r = frame::resolve_light(sun, o);
+  EXPECT_EQ(r.settings.bias.constant, 0.02f);
+  EXPECT_EQ(r.settings.bias.slope, 0.003f);
+  EXPECT_EQ(r.settings.bias.slope_max, 0.05f);
+  EXPECT_EQ(r.settings.bias.offset_factor, -2.0f);
+  EXPECT_EQ(r.settings.bias.offset_units, 8.0f);
+  EXPECT_EQ(r.settings.bias.normal_offset, 0.1f);
+  EXPECT_EQ(r.settings.filter_params.spread, 1.0f / 350.0f);
+  EXPECT_TRUE(r.settings.filter_params.stratify_world);
+  EXPECT_TRUE(r.fixed_box);
+  // Unset options keep the light's own values.
+  const frame::ResolvedLight d = frame::resolve_light(sun, frame::FrameOptions{});
+  EXPECT_EQ(d.settings.bias.constant, sun.shadow.bias.constant);
+  EXPECT_EQ(d.settings.filter_params.spread, sun.shadow.poisson_spread);
+  EXPECT_FALSE(d.settings.filter_params.stratify_world);
+}
+
+TEST(FrameLights, BadOverridesNameTheOption) {
+  const scenes::Light sun = scenes::builtin_scene("tutorial").lights.at(0);
+  auto message = [&](auto set) {
+    frame::FrameOptions o;
+    set(o);
+    try {
+      frame::resolve_light(sun, o);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message([](frame::FrameOptions& o) { o.poisson_spread = 0.0f; }).rfind("--poisson-spread: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameOptions& o) { o.bias_constant = -0.1f; }).rfind("--bias-constant: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameOptions& o) { o.bias_slope = NAN; }).rfind("--bias-slope: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameOptions& o) { o.offset_units = INFINITY; }).rfind("--offset-units: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameOptions& o) { o.stratify = "diagonal"; }).rfind("--stratify: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameOptions& o) { o.fit = "loose"; }).rfind("--fit: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameOptions& o) { o.offset_factor = -3.0f; }), "no error");  // signed is fine
+}
