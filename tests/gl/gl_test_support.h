@@ -1,10 +1,12 @@
 // Helpers for the tests that use the llvmpipe reference: make a Context or skip the test with the reason, and
 // count llvmpipe's rasterizer threads (named "llvmpipe-N") in this process.
 #pragma once
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -33,6 +35,17 @@ inline int llvmpipe_thread_count() {
     std::string name;
     std::getline(comm, name);
     if (name.rfind("llvmpipe-", 0) == 0) ++n;
+  }
+  return n;
+}
+
+// llvmpipe's workers name themselves after they start and leave /proc a moment after they are joined, so on a
+// loaded machine the count lags the context: poll until it reaches `expected` or 10 s pass, then return it.
+inline int llvmpipe_thread_count_settled(int expected) {
+  int n = llvmpipe_thread_count();
+  for (int i = 0; i < 1000 && n != expected; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    n = llvmpipe_thread_count();
   }
   return n;
 }
