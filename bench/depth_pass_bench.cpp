@@ -2,10 +2,13 @@
 // (c) the Stanford dragon fitted to the map, into a 2048² d32f target, with shadowlab and with Mesa llvmpipe on the
 // same triangles and the same thread count, in one run. Prints Google Benchmark's table (min / median / max per
 // case; --benchmark_format=json for machine-readable output) and then a ratio table.
-//   shadowlab_bench_depth [--threads N] [--smoke] [--no-llvmpipe] [benchmark flags]
+// With --verify it first renders every case once with both and reports, per case, the pixels whose stored depth
+// differs (covered by one only, or any bit of the value) and a hash of shadowlab's map, then exits.
+//   shadowlab_bench_depth [--threads N] [--smoke] [--no-llvmpipe] [--verify] [benchmark flags]
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -44,9 +47,59 @@ std::vector<Workload> make_workloads(bool smoke) {
   return w;
 }
 
+// FNV-1a over the stored values, rows bottom first: a fingerprint to compare builds with.
+uint64_t map_hash(const raster::DepthTarget& t) {
+  uint64_t h = 1469598103934665603ull;
+  for (int y = 0; y < t.height(); ++y)
+    for (int x = 0; x < t.width(); ++x) h = (h ^ t.raw(x, y)) * 1099511628211ull;
+  return h;
+}
+
+// --verify: one draw of each case by both renderers, compared pixel by pixel. Returns the process exit code.
+int verify(const std::vector<Workload>& workloads, raster::Renderer& renderer, raster::DepthTarget& target,
+           glref::Context* gl) {
+  int status = 0;
+  for (const Workload& w : workloads) {
+    target.clear(1.0f);
+    renderer.draw(raster::RenderTargets{&target}, raster::DrawState{}, raster::ClipSpaceDepthShader{},
+                  std::span<const glm::vec4>(w.soup.positions), w.soup.indices);
+    const unsigned long long hash = map_hash(target);
+    if (!gl) {
+      std::printf("%-16s hash %016llx (no llvmpipe to compare with)\n", w.name.c_str(), hash);
+      continue;
+    }
+    glref::Context::DepthDraw d;
+    d.width = d.height = kMapSize;
+    d.format = raster::DepthFormat::d32f;
+    d.clip_positions = w.soup.positions;
+    d.indices = w.soup.indices;
+    const std::vector<uint32_t> ref = gl->render_depth(d);
+    const uint32_t clear = std::bit_cast<uint32_t>(1.0f);  // what both maps were cleared to
+    size_t coverage = 0, bits = 0;
+    for (int y = 0; y < kMapSize; ++y)
+      for (int x = 0; x < kMapSize; ++x) {
+        const uint32_t a = target.raw(x, y), b = ref[size_t(y) * kMapSize + size_t(x)];
+        if ((a == clear) != (b == clear)) ++coverage;
+        else if (a != b) ++bits;
+      }
+    std::printf("%-16s hash %016llx, pixels covered by one only: %zu, other depth differences: %zu\n",
+                w.name.c_str(), hash, coverage, bits);
+    if (coverage || bits) status = 1;
+  }
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  bool verify_only = false;
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--verify") == 0) {
+      verify_only = true;
+      for (int j = i; j + 1 < argc; ++j) argv[j] = argv[j + 1];
+      --argc;
+      break;
+    }
   bench::Options opt = bench::parse_options(argc, argv);
   const auto workloads = make_workloads(opt.smoke);
   raster::Renderer renderer(opt.threads);
@@ -57,6 +110,7 @@ int main(int argc, char** argv) {
     gl = glref::Context::create(opt.threads, &why);
     if (!gl) std::fprintf(stderr, "llvmpipe unavailable (%s): shadowlab only\n", why.c_str());
   }
+  if (verify_only) return verify(workloads, renderer, target, gl.get());
 
   for (const Workload& w : workloads) {
     const double tris = double(w.soup.indices.size() / 3);

@@ -46,6 +46,24 @@ struct PcfPassShader {
       out.color[l] = glm::vec4(lit, lit, lit, 1.0f);
     }
   }
+  // The same, two quads at a time in SIMD lanes (what the pipeline runs; fragment() stays as the reference).
+  void fragment_pair(const raster::QuadPairIn<Varyings>& q, raster::QuadPairOut& out) const {
+    using raster::simd::VecF32;
+    const VecF32 px = q.frag_x * VecF32::splat(inv_target.x), py = q.frag_y * VecF32::splat(inv_target.y);
+    const VecF32 ref = VecF32::splat(0.5f) * (px + py);
+    VecF32 lit;
+    if constexpr (kTaps == 1) {
+      lit = kernel(px, py, ref);
+    } else {
+      lit = VecF32::splat(0.0f);
+      for (int i = 0; i < kTaps; ++i) {
+        const glm::vec2 o = disk[i] * radius;
+        lit = lit + kernel(px + VecF32::splat(o.x), py + VecF32::splat(o.y), ref);
+      }
+      lit = lit * VecF32::splat(1.0f / kTaps);
+    }
+    out.color = {lit, lit, lit, VecF32::splat(1.0f)};
+  }
 };
 
 }  // namespace

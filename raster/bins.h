@@ -31,9 +31,12 @@ struct ChunkBins {
   }
 
   // Appends a set-up triangle and counts it in every tile its box touches.
-  void add(const TriangleSetup& t, const TileGrid& grid) {
+  // Most triangles of a detailed mesh lie in one tile: those are counted without the loops of for_each_tile.
+  [[gnu::always_inline]] void add(const TriangleSetup& t, const TileGrid& grid) {
     setups.push_back(t);
-    for_each_tile(t, grid, [&](int k) { ++offsets[size_t(k) + 1]; });
+    const int k = single_tile(t, grid);
+    if (k >= 0) ++offsets[size_t(k) + 1];
+    else for_each_tile(t, grid, [&](int j) { ++offsets[size_t(j) + 1]; });
   }
 
   // Sorts `setups` into per-tile slices (counting sort: the counts were taken by add(), then a prefix sum and
@@ -43,7 +46,18 @@ struct ChunkBins {
     binned.resize(offsets.back());
     std::vector<uint32_t>& cursor = scratch_;
     cursor.assign(offsets.begin(), offsets.end() - 1);
-    for (const TriangleSetup& t : setups) for_each_tile(t, grid, [&](int k) { binned[cursor[size_t(k)]++] = t; });
+    for (const TriangleSetup& t : setups) {
+      const int k = single_tile(t, grid);
+      if (k >= 0) binned[cursor[size_t(k)]++] = t;
+      else for_each_tile(t, grid, [&](int j) { binned[cursor[size_t(j)]++] = t; });
+    }
+  }
+
+  // The tile holding the triangle's whole box, or -1 when the box spans several.
+  static int single_tile(const TriangleSetup& t, const TileGrid& grid) {
+    const int tx = t.min_x >> kTileSizeLog2, ty = t.min_y >> kTileSizeLog2;
+    const bool one = ((t.max_x >> kTileSizeLog2) == tx) & ((t.max_y >> kTileSizeLog2) == ty);
+    return one ? ty * grid.tiles_x + tx : -1;
   }
 
   template <class F>

@@ -53,11 +53,6 @@ inline unsigned lane_range_mask(int lo, int hi) { return ((2u << hi) - 1u) & ~((
   return mask;
 }
 
-// Largest edge coefficient for which the narrow path's int32 edge values are exact: such a triangle spans at most
-// 256 pixels, every pixel of its box widened by 8 lies within 264 pixels of each edge line, so
-// |F| <= 2 · 2^16 · 264 < 2^26 there.
-inline constexpr int32_t kNarrowMaxCoef = 1 << 16;
-
 // Per-row edge values of the (up to three) edges that cross a region, stepped one row at a time.
 struct EdgeRows {
   simd::VecI32 f[3], step[3];
@@ -79,11 +74,70 @@ struct EdgeRows {
   }
 };
 
+// Whether every edge coefficient is small enough for the narrow path's int32 edge values (limits.h).
+inline bool is_narrow(const TriangleSetup& t) { return t.flags & kNarrowEdges; }
+
+// The block walk of a row stage over the pixels [x0, x1] × [y0, y1] of one tile. Each edge's exact int64 value
+// is stepped from block to block (g = F at the block's corner where F is largest, so the block lies outside the
+// edge when g < 0 and the edge crosses it when g < its range over the block); blocks inside every edge are
+// handed over row by row without per-pixel edge tests.
+template <class Stage>
+inline void rasterize_blocks(const TriangleSetup& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                             const Stage& stage) {
+  constexpr int64_t kSpan = kBlockSize - 1;
+  const int32_t bx0 = x0 & ~(kBlockSize - 1), by0 = y0 & ~(kBlockSize - 1);
+  int64_t g_row[3], range[3], to_start[3], step_x[3], step_y[3];
+  for (int k = 0; k < 3; ++k) {
+    const int64_t a = t.a[k], b = t.b[k];
+    const int64_t hi = (std::max<int64_t>(a, 0) + std::max<int64_t>(b, 0)) * kSpan;
+    g_row[k] = a * bx0 + b * by0 - t.t[k] + hi;
+    range[k] = (std::abs(a) + std::abs(b)) * kSpan;
+    to_start[k] = -hi;  // g + to_start: F at the block's first pixel
+    step_x[k] = a * kBlockSize;
+    step_y[k] = b * kBlockSize;
+  }
+  const auto hiz = stage.hiz_plane(t, PixelRect{x0, y0, x1, y1});
+  for (int32_t by = by0; by <= y1; by += kBlockSize) {
+    const int row_lo = std::max(y0 - by, 0), row_hi = std::min(y1 - by, kBlockSize - 1);
+    const unsigned rows = lane_range_mask(row_lo, row_hi);
+    int64_t g0 = g_row[0], g1 = g_row[1], g2 = g_row[2];
+    for (int32_t bx = bx0; bx <= x1; bx += kBlockSize, g0 += step_x[0], g1 += step_x[1], g2 += step_x[2]) {
+      if ((g0 | g1 | g2) < 0) continue;  // outside an edge
+      if (stage.block_hidden(hiz, bx, by)) continue;
+      const bool crosses[3] = {g0 < range[0], g1 < range[1], g2 < range[2]};
+      const simd::Mask lanes =
+          simd::Mask::from_bits(lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1)));
+      const auto cols = stage.columns(t, bx);
+      typename Stage::BlockMax bm;
+      unsigned done = rows;
+      auto at = stage.cursor(bx, by + row_lo);
+      if (!crosses[0] && !crosses[1] && !crosses[2]) {  // trivially accepted
+        for (int r = row_lo; r <= row_hi; ++r, stage.next_row(at)) stage.row(cols, at, lanes, bm);
+      } else {
+        const int64_t f_start[3] = {g0 + to_start[0] + t.b[0] * int64_t(row_lo),
+                                    g1 + to_start[1] + t.b[1] * int64_t(row_lo),
+                                    g2 + to_start[2] + t.b[2] * int64_t(row_lo)};
+        EdgeRows edges(t, f_start, crosses);
+        for (int r = row_lo; r <= row_hi; ++r) {
+          const simd::Mask m = lanes & edges.inside();
+          if (m.any()) stage.row(cols, at, m, bm);
+          else done &= ~(1u << r);
+          edges.next_row();
+          stage.next_row(at);
+        }
+      }
+      stage.block_done(bx, by, bm, done);
+    }
+    for (int k = 0; k < 3; ++k) g_row[k] += step_y[k];
+  }
+}
+
 // Rasterizes one triangle within `r` (a rectangle inside one tile) and hands covered pixels to the stage.
-// A row stage (depth-only) has columns(t, x) and row(t, columns, x, y, Mask) entries, and block_hidden /
-// block_done around each block (hierarchical depth) and gets one 8-lane segment
-// per row; narrow triangles (at most 8 pixels wide within `r`) take one segment placed inside the tile, others
-// go through 8×8 blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks.
+// A row stage (depth-only) has columns(t, x), cursor(x, y) / next_row(cursor), row(columns, cursor, Mask,
+// BlockMax&), and hiz_plane /
+// block_hidden / block_done around each block (hierarchical depth), and gets one 8-lane segment per row; narrow
+// triangles (at most 8 pixels wide within `r`) take one segment placed inside the tile, others go through 8×8
+// blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks.
 template <class Stage>
 inline void rasterize(const TriangleSetup& t, const PixelRect& r, const Stage& stage) {
   constexpr bool kRowStage = requires { stage.columns(t, 0); };
@@ -91,59 +145,31 @@ inline void rasterize(const TriangleSetup& t, const PixelRect& r, const Stage& s
   const int32_t y0 = std::max(t.min_y, r.y0), y1 = std::min(t.max_y, r.y1);
   if (x0 > x1 || y0 > y1) return;
   if constexpr (kRowStage) {
-    const bool small = std::abs(t.a[0]) <= kNarrowMaxCoef && std::abs(t.a[1]) <= kNarrowMaxCoef &&
-                       std::abs(t.a[2]) <= kNarrowMaxCoef && std::abs(t.b[0]) <= kNarrowMaxCoef &&
-                       std::abs(t.b[1]) <= kNarrowMaxCoef && std::abs(t.b[2]) <= kNarrowMaxCoef;
-    if (x1 - x0 < kBlockSize && small) {
+    if (x1 - x0 < kBlockSize && is_narrow(t)) {
       const int32_t xs = std::min(x0, (x0 | (kTileSize - 1)) - (kBlockSize - 1));  // segment stays in the tile
       const simd::Mask lanes = simd::Mask::from_bits(lane_range_mask(x0 - xs, x1 - xs));
       int64_t f_start[3];
       const bool crosses[3] = {true, true, true};
-      for (int k = 0; k < 3; ++k) f_start[k] = int64_t(t.a[k]) * xs + int64_t(t.b[k]) * y0 - t.t[k];
+      for (int k = 0; k < 3; ++k)  // exact modulo 2^32, and the value fits int32 (limits.h, kNarrowCoefBits)
+        f_start[k] = int32_t(uint32_t(t.a[k]) * uint32_t(xs) + uint32_t(t.b[k]) * uint32_t(y0) - uint32_t(t.t[k]));
       EdgeRows edges(t, f_start, crosses);
       const auto cols = stage.columns(t, xs);
+      typename Stage::BlockMax unused;
+      auto at = stage.cursor(xs, y0);
       for (int32_t y = y0; y <= y1; ++y) {
         const simd::Mask m = lanes & edges.inside();
-        if (m.any()) stage.row(t, cols, xs, y, m);
+        if (m.any()) stage.row(cols, at, m, unused);
         edges.next_row();
+        stage.next_row(at);
       }
       return;
     }
-  }
-  constexpr int64_t kSpan = kBlockSize - 1;
-  for (int32_t by = y0 & ~(kBlockSize - 1); by <= y1; by += kBlockSize) {
-    const int row_lo = std::max(y0 - by, 0), row_hi = std::min(y1 - by, kBlockSize - 1);
-    for (int32_t bx = x0 & ~(kBlockSize - 1); bx <= x1; bx += kBlockSize) {
-      const unsigned lane_bits = lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1));
-      if constexpr (kRowStage) {
-        // Hierarchical test: the exact int64 edge value at the block's first pixel and its range over the block.
-        int64_t f_start[3];
-        bool crosses[3];
-        bool outside = false;
-        for (int k = 0; k < 3; ++k) {
-          const int64_t a = t.a[k], b = t.b[k];
-          const int64_t f0 = a * bx + b * by - t.t[k];
-          const int64_t lo = f0 + std::min<int64_t>(a, 0) * kSpan + std::min<int64_t>(b, 0) * kSpan;
-          const int64_t hi = f0 + std::max<int64_t>(a, 0) * kSpan + std::max<int64_t>(b, 0) * kSpan;
-          outside |= hi < 0;
-          crosses[k] = lo < 0;
-          f_start[k] = f0 + b * row_lo;
-        }
-        if (outside || stage.block_hidden(t, bx, by)) continue;
-        const simd::Mask lanes = simd::Mask::from_bits(lane_bits);
-        const auto cols = stage.columns(t, bx);
-        if (!crosses[0] && !crosses[1] && !crosses[2]) {  // trivially accepted
-          for (int r = row_lo; r <= row_hi; ++r) stage.row(t, cols, bx, by + r, lanes);
-        } else {
-          EdgeRows edges(t, f_start, crosses);
-          for (int r = row_lo; r <= row_hi; ++r) {
-            const simd::Mask m = lanes & edges.inside();
-            if (m.any()) stage.row(t, cols, bx, by + r, m);
-            edges.next_row();
-          }
-        }
-        stage.block_done(bx, by);
-      } else {
+    rasterize_blocks(t, x0, y0, x1, y1, stage);
+  } else {
+    for (int32_t by = y0 & ~(kBlockSize - 1); by <= y1; by += kBlockSize) {
+      const int row_lo = std::max(y0 - by, 0), row_hi = std::min(y1 - by, kBlockSize - 1);
+      for (int32_t bx = x0 & ~(kBlockSize - 1); bx <= x1; bx += kBlockSize) {
+        const unsigned lane_bits = lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1));
         const uint64_t mask = block_coverage(t, bx, by, lane_bits, row_lo, row_hi);
         if (mask) stage.block(t, bx, by, mask);
       }

@@ -21,46 +21,89 @@ inline simd::VecF32 plane_depth_columns(const TriangleSetup& t, int32_t bx) {
   return simd::fma(VecF32::splat(t.dzdx), x, VecF32::splat(t.z_a0));
 }
 
-inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, simd::VecF32 z_offset, int32_t y) {
+inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, simd::VecF32 z_offset, simd::VecF32 y) {
   using simd::VecF32;
-  const VecF32 z = simd::fma(dzdy, VecF32::splat(float(y)), zcol) + z_offset;
+  const VecF32 z = simd::fma(dzdy, y, zcol) + z_offset;
   return simd::min(simd::max(z, VecF32::splat(0.0f)), VecF32::splat(1.0f));
+}
+inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, simd::VecF32 z_offset, int32_t y) {
+  return plane_depth_clamped(zcol, dzdy, z_offset, simd::VecF32::splat(float(y)));
 }
 
 template <DepthFormat Format, DepthFunc Func, bool Write>
 struct DepthOnlyStage {
   using Traits = DepthTraits<Format>;
+  using Storage = typename Traits::Storage;
   // Hierarchical depth applies to LESS and LEQUAL into d32f: a block whose farthest stored depth is nearer
   // than everything the triangle has there cannot pass.
   static constexpr bool kHiZ =
       Format == DepthFormat::d32f && (Func == DepthFunc::less || Func == DepthFunc::lequal);
+
+  DepthOnlyStage(DepthTarget* d, TileHiZ* h)
+      : depth(d), hiz(h), base(d->row<Storage>(0)), pitch(size_t(d->pitch())) {}
+
   DepthTarget* depth;
   TileHiZ* hiz = nullptr;  // the tile's bounds, when kHiZ
+  Storage* base;           // the target's row 0, and the elements between two rows: no reload per row
+  size_t pitch;
 
-  bool block_hidden(const TriangleSetup& t, int32_t bx, int32_t by) const {
+  // The triangle's per-segment constants: the column part of the depth plane (see plane_depth_columns) and the
+  // row slope and polygon offset, splatted once.
+  struct Columns {
+    simd::VecF32 zcol, dzdy, z_offset;
+  };
+  // The farthest depth written to the rows of the current block, for the hierarchical bound (kHiZ only).
+  struct BlockMax {
+    simd::VecF32 z = simd::VecF32::splat(0.0f);
+  };
+
+  // The per-triangle part of the hierarchical test (see hiz.h), for blocks inside `r`.
+  HiZPlane hiz_plane(const TriangleSetup& t, const PixelRect& r) const {
+    if constexpr (kHiZ) return make_hiz_plane(t, r);
+    return {};
+  }
+  bool block_hidden(const HiZPlane& hp, int32_t bx, int32_t by) const {
     if constexpr (kHiZ) {
-      const float zmin = block_min_depth(t, bx, by), zmax = hiz->farthest(bx, by);
+      const float zmin = hp.min_depth(bx, by), zmax = hiz->farthest(bx, by);
       return Func == DepthFunc::less ? zmin >= zmax : zmin > zmax;
     }
     return false;
   }
 
-  void block_done(int32_t bx, int32_t by) const {
-    if constexpr (kHiZ && Write) hiz->refresh(*depth, bx, by);
+  // After the rows in `rows_done` (bit r: row by + r) of a block were handed to row() with `bm`: the block's
+  // new bound, from what was written and the rows left untouched.
+  void block_done(int32_t bx, int32_t by, const BlockMax& bm, unsigned rows_done) const {
+    if constexpr (kHiZ && Write) hiz->update(*depth, bx, by, bm.z, rows_done);
   }
 
   // The column part of the depth plane for the segment starting at x, computed once per segment.
-  simd::VecF32 columns(const TriangleSetup& t, int32_t x) const { return plane_depth_columns(t, x); }
+  Columns columns(const TriangleSetup& t, int32_t x) const {
+    return {plane_depth_columns(t, x), simd::VecF32::splat(t.dzdy), simd::VecF32::splat(t.z_offset)};
+  }
 
-  // Eight pixels (x + l, y) for the lanes set in `covered`.
-  [[gnu::always_inline]] void row(const TriangleSetup& t, simd::VecF32 zcol, int32_t x, int32_t y,
-                                  simd::Mask covered) const {
-    auto* p = depth->row<typename Traits::Storage>(y) + x;
-    const auto frag = Traits::from_depth(
-        plane_depth_clamped(zcol, simd::VecF32::splat(t.dzdy), simd::VecF32::splat(t.z_offset), y));
+  // Where a segment's row is: its first pixel in the target and its y as a float in every lane (exact: pixel
+  // indices are below 2^24), stepped one row up at a time.
+  struct Cursor {
+    Storage* p;
+    simd::VecF32 y;
+  };
+  Cursor cursor(int32_t x, int32_t y) const { return {base + size_t(y) * pitch + x, simd::VecF32::splat(float(y))}; }
+  void next_row(Cursor& c) const {
+    c.p += pitch;
+    c.y = c.y + simd::VecF32::splat(1.0f);
+  }
+
+  // The eight pixels at the cursor for the lanes set in `covered`.
+  [[gnu::always_inline]] void row(const Columns& c, const Cursor& at, simd::Mask covered, BlockMax& bm) const {
+    Storage* p = at.p;
+    const auto frag = Traits::from_depth(plane_depth_clamped(c.zcol, c.dzdy, c.z_offset, at.y));
     const auto stored = Traits::load(p);
     const simd::Mask pass = depth_compare<Func>(frag, stored) & covered;
-    if constexpr (Write) Traits::store(p, simd::select(pass, stored, frag));
+    if constexpr (Write) {
+      const auto next = simd::select(pass, stored, frag);
+      Traits::store(p, next);
+      if constexpr (kHiZ) bm.z = simd::max(bm.z, next);
+    }
   }
 };
 

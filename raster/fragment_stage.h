@@ -1,6 +1,8 @@
 // The back end of a shaded draw: covered pixels of a block grouped into 2×2 quads, early depth test when the
 // shader allows it, the shader run on the quad (helper lanes included), late depth test, depth write, and the
-// colour write with blending.
+// colour write with blending. A shader with the wide form (fragment_pair, shader.h) runs on two quads at once
+// in SIMD lanes instead, with the depth test, depth write and RGBA8 colour write eight pixels at a time; both
+// paths give the same bits.
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -9,6 +11,7 @@
 #include "raster/interpolation.h"
 #include "raster/quad.h"
 #include "raster/shader.h"
+#include "raster/simd/vec.h"
 #include "raster/state.h"
 #include "raster/target.h"
 
@@ -47,11 +50,18 @@ inline float plane_depth(const TriangleSetup& t, int32_t x, int32_t y) {
   return clamp01(std::fma(t.dzdy, float(y), zcol) + t.z_offset);
 }
 
+// clamp01 on eight lanes, NaN kept as clamp01 keeps it (maxps and minps return their second operand then).
+inline simd::VecF32 clamp01(simd::VecF32 z) {
+  return simd::min(simd::VecF32::splat(1.0f), simd::max(simd::VecF32::splat(0.0f), z));
+}
+
 template <class Shader, DepthFormat Format, DepthFunc Func>
 struct ShadedStage {
   using V = typename Shader::Varyings;
   using SD = ScalarDepth<Format, Func>;
+  using Traits = DepthTraits<Format>;
   static constexpr bool kEarlyZ = !shader_discards<Shader>() && !shader_writes_depth<Shader>();
+  static constexpr bool kPair = HasPairFragmentStage<Shader>;
 
   const Shader* shader;
   const TriangleInterp<V>* interps;  // of the chunk being executed
@@ -61,6 +71,10 @@ struct ShadedStage {
   BlendMode blend;
 
   void block(const TriangleSetup& t, int32_t bx, int32_t by, uint64_t mask) const {
+    if constexpr (kPair) {
+      pair_block(t, bx, by, mask);
+      return;
+    }
     for (int p = 0; p < 4; ++p) {
       const unsigned m0 = unsigned(mask >> (16 * p)) & 0xFFu, m1 = unsigned(mask >> (16 * p + 8)) & 0xFFu;
       if (!(m0 | m1)) continue;
@@ -117,6 +131,100 @@ struct ShadedStage {
       if (SD::test(SD::convert(z[l]), SD::load(d))) pass |= 1u << l;
     }
     return pass;
+  }
+
+  // ---- The wide path: the block as eight 4×2 groups (two quads each), rows of quads bottom to top. What
+  // depends only on the column (left or right half) or only on the row pair is computed once per block.
+  struct PairColumn {
+    simd::VecF32 x, zcol;  // pixel indices; fma(dzdx, x, z_a0)
+    typename PairInterp<V>::Columns interp;
+  };
+  struct PairRow {
+    simd::VecF32 y;
+    typename PairInterp<V>::Rows interp;
+  };
+
+  void pair_block(const TriangleSetup& t, int32_t bx, int32_t by, uint64_t mask) const {
+    using simd::VecF32;
+    alignas(32) static constexpr float kLaneX[8] = {0, 1, 2, 3, 0, 1, 2, 3}, kLaneY[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+    const PairInterp<V> interp(interps[t.prim & ~kBackFacingBit]);
+    const VecF32 half = VecF32::splat(0.5f), dzdy = VecF32::splat(t.dzdy), z_offset = VecF32::splat(t.z_offset);
+    PairColumn cols[2];
+    for (int h = 0; h < 2; ++h) {
+      cols[h].x = VecF32::splat(float(bx + 4 * h)) + VecF32::load(kLaneX);  // exact: indices below 2^24
+      cols[h].zcol = simd::fma(VecF32::splat(t.dzdx), cols[h].x, VecF32::splat(t.z_a0));
+      cols[h].interp = interp.columns(cols[h].x + half);
+    }
+    for (int p = 0; p < 4; ++p) {
+      const unsigned rows = unsigned(mask >> (16 * p)) & 0xFFFFu;
+      if (!rows) continue;
+      PairRow row;
+      row.y = VecF32::splat(float(by + 2 * p)) + VecF32::load(kLaneY);
+      row.interp = interp.rows(row.y + half);
+      for (int h = 0; h < 2; ++h) {
+        const unsigned live = ((rows >> (4 * h)) & 0xFu) | (((rows >> (8 + 4 * h)) & 0xFu) << 4);
+        if (!live) continue;
+        // plane_depth's operations: fma(dzdy, y, fma(dzdx, x, z_a0)) + z_offset, clamped.
+        const VecF32 z = clamp01(simd::fma(dzdy, row.y, cols[h].zcol) + z_offset);
+        pair(t, interp, cols[h], row, z, bx + 4 * h, by + 2 * p, live);
+      }
+    }
+  }
+
+  // Lanes as QuadPairIn says: lane i at (x + (i & 3), y + (i >> 2)); the same steps as quad(), eight at a time.
+  [[gnu::always_inline]] void pair(const TriangleSetup& t, const PairInterp<V>& interp, const PairColumn& col,
+                                   const PairRow& row, simd::VecF32 z, int32_t x, int32_t y, unsigned live) const {
+    using simd::VecF32;
+    using Storage = typename Traits::Storage;
+    Storage* d0 = nullptr;
+    Storage* d1 = nullptr;
+    typename Traits::Value stored{};
+    if (depth) {
+      d0 = depth->row<Storage>(y) + x, d1 = depth->row<Storage>(y + 1) + x;
+      stored = simd::load_rows4(d0, d1);
+    }
+    if constexpr (kEarlyZ) {
+      if (depth) live &= depth_compare<Func>(Traits::from_depth(z), stored).bits();
+      if (!live) return;
+    }
+    QuadPairIn<V> in;
+    in.live = uint8_t(live);
+    in.front_facing = !(t.prim & kBackFacingBit);
+    in.frag_x = col.x + VecF32::splat(0.5f), in.frag_y = row.y + VecF32::splat(0.5f), in.frag_z = z;
+    in.frag_w = interp(col.interp, row.interp, in.in);
+    QuadPairOut out;
+    shader->fragment_pair(in, out);
+    if constexpr (shader_discards<Shader>()) live &= ~unsigned(out.discard);
+    if constexpr (shader_writes_depth<Shader>()) z = clamp01(out.depth);
+    const auto frag = Traits::from_depth(z);
+    if constexpr (!kEarlyZ) {
+      if (depth) live &= depth_compare<Func>(frag, stored).bits();
+    }
+    if (!live) return;
+    if (depth && depth_write && Func != DepthFunc::never)
+      simd::store_rows4(simd::select(simd::Mask::from_bits(live), stored, frag), d0, d1);
+    if (color && color_write) write_pair_color(x, y, out, live);
+  }
+
+  void write_pair_color(int32_t x, int32_t y, const QuadPairOut& out, unsigned live) const {
+    using simd::VecF32, simd::VecI32;
+    if (color->format() == ColorFormat::rgba8 && !color->srgb() && blend == BlendMode::replace) {
+      // ColorTarget::write's conversion: clamp to [0, 1] (NaN to 0, what its cast gives on x86), round(c · 255).
+      VecI32 ch[4];
+      for (int i = 0; i < 4; ++i)
+        ch[i] = simd::round_to_int(simd::min(simd::max(out.color[i], VecF32::splat(0.0f)), VecF32::splat(1.0f)) *
+                                   VecF32::splat(255.0f));
+      VecI32 packed = ch[0] | simd::shift_left<8>(ch[1]) | simd::shift_left<16>(ch[2]) | simd::shift_left<24>(ch[3]);
+      uint32_t* r0 = reinterpret_cast<uint32_t*>(color->row8(y)) + x;
+      uint32_t* r1 = reinterpret_cast<uint32_t*>(color->row8(y + 1)) + x;
+      if (live != 0xFFu) packed = simd::select(simd::Mask::from_bits(live), simd::load_rows4(r0, r1), packed);
+      simd::store_rows4(packed, r0, r1);
+      return;
+    }
+    alignas(32) float ch[4][8];
+    for (int i = 0; i < 4; ++i) out.color[i].store(ch[i]);
+    for (int l = 0; l < 8; ++l)
+      if (live >> l & 1u) write_color(x + (l & 3), y + (l >> 2), glm::vec4(ch[0][l], ch[1][l], ch[2][l], ch[3][l]));
   }
 
   void write_color(int32_t x, int32_t y, const glm::vec4& c) const {

@@ -3,6 +3,7 @@
 // blocks are ones that would write nothing, so the output is unchanged. Tile-scoped, owned by one worker.
 #pragma once
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -26,16 +27,21 @@ class TileHiZ {
       for (int i = 0; i < kBlocks; ++i) refresh(d, x0 + i * kBlockSize, y0 + j * kBlockSize);
   }
 
-  float farthest(int32_t bx, int32_t by) const { return zmax_[(by - y0_) / kBlockSize][(bx - x0_) / kBlockSize]; }
+  float farthest(int32_t bx, int32_t by) const {
+    return zmax_[(by - y0_) >> kBlockSizeLog2][(bx - x0_) >> kBlockSizeLog2];
+  }
 
   // Recomputes one block's bound after writes.
-  void refresh(const DepthTarget& d, int32_t bx, int32_t by) {
-    const int rows = std::min(kBlockSize, d.padded_height() - by);
-    simd::VecF32 m = simd::VecF32::splat(0.0f);
-    for (int r = 0; r < rows; ++r) m = simd::max(m, simd::VecF32::load(d.row<float>(by + r) + bx));
-    alignas(32) float lanes[8];
-    m.store(lanes);
-    zmax_[(by - y0_) / kBlockSize][(bx - x0_) / kBlockSize] = *std::max_element(lanes, lanes + 8);
+  void refresh(const DepthTarget& d, int32_t bx, int32_t by) { update(d, bx, by, simd::VecF32::splat(0.0f), 0u); }
+
+  // The block's bound after writes, from `written` (the lane-wise maximum of what rows in `rows_done`, bit r for
+  // row by + r, now hold) and the rows not in `rows_done`, read back. Tiles lie inside the padded target, so
+  // all eight rows exist.
+  void update(const DepthTarget& d, int32_t bx, int32_t by, simd::VecF32 written, unsigned rows_done) {
+    simd::VecF32 m = written;
+    for (unsigned rest = ~rows_done & 0xFFu; rest != 0; rest &= rest - 1)
+      m = simd::max(m, simd::VecF32::load(d.row<float>(by + std::countr_zero(rest)) + bx));
+    zmax_[(by - y0_) >> kBlockSizeLog2][(bx - x0_) >> kBlockSizeLog2] = simd::reduce_max(m);
   }
 
  private:
@@ -43,16 +49,29 @@ class TileHiZ {
   float zmax_[kBlocks][kBlocks];
 };
 
-// A lower bound of the triangle's clamped depth over the 8×8 block at (bx, by): the plane at the block's corner
-// where it is smallest, less a margin for the rounding of the per-pixel evaluation (two fused multiply-adds and an
-// add whose operands are bounded by `scale`, so each rounds by at most scale · 2^-24; 2^-21 covers them).
-inline float block_min_depth(const TriangleSetup& t, int32_t bx, int32_t by) {
-  const double x = t.dzdx > 0 ? bx : bx + kBlockSize - 1;
-  const double y = t.dzdy > 0 ? by : by + kBlockSize - 1;
-  const double z = double(t.z_a0) + double(t.dzdx) * x + double(t.dzdy) * y + double(t.z_offset);
-  const double scale = std::abs(double(t.z_a0)) + std::abs(double(t.dzdx)) * (bx + kBlockSize) +
-                       std::abs(double(t.dzdy)) * (by + kBlockSize) + std::abs(double(t.z_offset)) + 1.0;
-  return float(std::clamp(z - scale * 0x1p-21, 0.0, 1.0));
+// A lower bound of the triangle's clamped depth over any 8×8 block at (bx, by) of a rectangle: the plane at the
+// block's corner where it is smallest, less a margin for the rounding of the per-pixel evaluation (two fused
+// multiply-adds and an add whose operands are bounded by `scale`, so each rounds by at most scale · 2^-24; 2^-21
+// covers them). `scale` is taken at the rectangle's far corner, which bounds it for every block inside, so the
+// per-block work is two multiply-adds; the double arithmetic's own rounding (2^-53 relative) is far inside the
+// margin's slack.
+struct HiZPlane {
+  double z0 = 0.0, dx = 0.0, dy = 0.0;
+  float min_depth(int32_t bx, int32_t by) const {
+    return float(std::clamp(z0 + dx * double(bx) + dy * double(by), 0.0, 1.0));
+  }
+};
+
+inline HiZPlane make_hiz_plane(const TriangleSetup& t, const PixelRect& r) {
+  const double cx = t.dzdx > 0 ? 0.0 : double(kBlockSize - 1);
+  const double cy = t.dzdy > 0 ? 0.0 : double(kBlockSize - 1);
+  const double scale = std::abs(double(t.z_a0)) + std::abs(double(t.dzdx)) * (double(r.x1) + kBlockSize) +
+                       std::abs(double(t.dzdy)) * (double(r.y1) + kBlockSize) + std::abs(double(t.z_offset)) + 1.0;
+  HiZPlane p;
+  p.dx = double(t.dzdx);
+  p.dy = double(t.dzdy);
+  p.z0 = double(t.z_a0) + double(t.z_offset) + p.dx * cx + p.dy * cy - scale * 0x1p-21;
+  return p;
 }
 
 }  // namespace raster

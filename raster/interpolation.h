@@ -1,5 +1,7 @@
 // Perspective-correct interpolation for shaded draws: per triangle, the screen-space planes of λk / wk (linear in
 // window space), and per pixel the barycentrics b_k = (λk/wk) / Σ(λj/wj) that weight the vertices' varyings.
+// interpolate() does one pixel; PairInterp the eight pixels of a quad pair in SIMD lanes, with the same
+// operations in the same order, so both give the same bits.
 #pragma once
 #include <array>
 #include <cstring>
@@ -8,6 +10,7 @@
 
 #include "raster/primitive.h"
 #include "raster/shader.h"
+#include "raster/simd/vec.h"
 
 namespace raster {
 
@@ -67,5 +70,58 @@ float interpolate(const TriangleInterp<V>& t, float px, float py, V& out) {
   }
   return sum;
 }
+
+// A triangle's interpolation record as splatted SIMD constants, made once per triangle and block.
+template <class V>
+struct PairInterp {
+  static constexpr int kN = kVaryingFloats<V>;
+  simd::VecF32 x0, y0, g[3], gdx[3], gdy[3];
+  std::array<simd::VecF32, size_t(kN)> v0, d1, d2;
+
+  explicit PairInterp(const TriangleInterp<V>& t) {
+    using simd::VecF32;
+    x0 = VecF32::splat(t.x0), y0 = VecF32::splat(t.y0);
+    for (int k = 0; k < 3; ++k) g[k] = VecF32::splat(t.g[k]), gdx[k] = VecF32::splat(t.gdx[k]), gdy[k] = VecF32::splat(t.gdy[k]);
+    if constexpr (kN > 0) {
+      float a[kN], b[kN], c[kN];
+      std::memcpy(a, &t.v0, sizeof(V));
+      std::memcpy(b, &t.d1, sizeof(V));
+      std::memcpy(c, &t.d2, sizeof(V));
+      for (int i = 0; i < kN; ++i) v0[i] = VecF32::splat(a[i]), d1[i] = VecF32::splat(b[i]), d2[i] = VecF32::splat(c[i]);
+    }
+  }
+
+  // interpolate() at pixel centres (px, py), split as it associates: g + gdx·(px − x0) depends on the column
+  // only, gdy·(py − y0) on the row only, so each is computed once per block and shared by its groups.
+  struct Columns {
+    simd::VecF32 g[3];
+  };
+  struct Rows {
+    simd::VecF32 g[3];
+  };
+  Columns columns(simd::VecF32 px) const {
+    const simd::VecF32 dx = px - x0;
+    Columns c;
+    for (int k = 0; k < 3; ++k) c.g[k] = g[k] + gdx[k] * dx;
+    return c;
+  }
+  Rows rows(simd::VecF32 py) const {
+    const simd::VecF32 dy = py - y0;
+    Rows r;
+    for (int k = 0; k < 3; ++k) r.g[k] = gdy[k] * dy;
+    return r;
+  }
+  // The varyings into `out`; returns 1/w.
+  simd::VecF32 operator()(const Columns& c, const Rows& r, std::array<simd::VecF32, size_t(kN)>& out) const {
+    simd::VecF32 gk[3];
+    for (int k = 0; k < 3; ++k) gk[k] = c.g[k] + r.g[k];
+    const simd::VecF32 sum = gk[0] + gk[1] + gk[2];
+    if constexpr (kN > 0) {
+      const simd::VecF32 b1 = simd::div(gk[1], sum), b2 = simd::div(gk[2], sum);
+      for (int i = 0; i < kN; ++i) out[i] = v0[i] + b1 * d1[i] + b2 * d2[i];
+    }
+    return sum;
+  }
+};
 
 }  // namespace raster

@@ -49,6 +49,14 @@ static_assert(2.0 * double(kMaxEdgeCoef) * double(2 * kMaxCoord + (int64_t(kMaxT
 // satisfies |F| < 2^30: per-pixel edge arithmetic is int32, eight lanes to a vector.
 inline constexpr int64_t kMaxBlockOffset = 2 * (kBlockSize - 1) * kMaxEdgeCoef;
 static_assert(2 * kMaxBlockOffset < (int64_t(1) << 31), "per-pixel edge values must fit int32");
+// The narrow path (coverage.h) computes per-pixel edge values in int32 straight from the triangle's edges, for
+// rows of at most 8 pixels. Setup marks a triangle for it when every |edge coefficient| is below
+// 2^kNarrowCoefBits: such a triangle spans less than 2^(17 − 8) = 512 pixels, every pixel of its box widened by
+// one block lies within 512 + 8 pixels of each edge line, so there |F| < 2 · 2^17 · 520 < 2^31. The int64 edge
+// constant then needs only its low 32 bits there (int32 arithmetic wraps modulo 2^32 to the exact value).
+inline constexpr int kNarrowCoefBits = 17;
+static_assert(2 * (int64_t(1) << kNarrowCoefBits) * ((int64_t(1) << (kNarrowCoefBits - kSubpixelBits)) + kBlockSize) <
+              (int64_t(1) << 31));
 // The viewport origin and size are bounded so that pixel indices and tile counts fit comfortably.
 static_assert(kMaxTargetSize <= kGuardBand / 2);
 static_assert(kMaxTargetSize % kTileSize == 0 && kTileSize % kBlockSize == 0);

@@ -32,9 +32,11 @@ struct alignas(16) TriangleSetup {
   float dzdx, dzdy;  // window-space depth slopes
   float z_offset;    // polygon offset (0 when the draw has none)
   uint32_t prim;     // shaded draws: index of the triangle's interpolation record; bit 31: back-facing
+  uint32_t flags;    // kNarrowEdges when every |a[k]|, |b[k]| < 2^kNarrowCoefBits (limits.h)
 };
 static_assert(sizeof(TriangleSetup) == 96);
 
 inline constexpr uint32_t kBackFacingBit = 0x80000000u;
+inline constexpr uint32_t kNarrowEdges = 1u;
 
 }  // namespace raster

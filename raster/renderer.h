@@ -21,6 +21,7 @@
 #include "raster/outcode.h"
 #include "raster/scratch.h"
 #include "raster/setup.h"
+#include "raster/setup_batch.h"
 #include "raster/shader.h"
 #include "raster/state.h"
 #include "raster/target.h"
@@ -140,6 +141,19 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       ++ch.stats.setups;
       ch.bins.add(t, grid);
     };
+    // Depth-only draws set up their unclipped triangles eight at a time (setup_batch.h), in the same order.
+    const bool batched = !kShaded && nv <= kBatchMaxVertices;
+    SetupBatch batch(sp, win);
+    auto take = [&](SetupResult r, const TriangleSetup& t) {
+      switch (r) {
+        case SetupResult::visible: break;
+        case SetupResult::culled: ++ch.stats.culled; return;
+        case SetupResult::degenerate: ++ch.stats.degenerate; return;
+        case SetupResult::outside: ++ch.stats.rejected; return;
+      }
+      ++ch.stats.setups;
+      ch.bins.add(t, grid);
+    };
     for (size_t i = c * detail::kChunkTriangles; i < end; ++i) {
       uint32_t idx[3];
       for (int k = 0; k < 3; ++k) {
@@ -155,11 +169,16 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
         continue;
       }
       if ((c0 | c1 | c2) == 0) {
+        if (batched) {
+          batch.push(idx[0], idx[1], idx[2], take);
+          continue;
+        }
         const WindowVertex* w[3] = {&win[idx[0]], &win[idx[1]], &win[idx[2]]};
         const V* var[3] = {&post[idx[0]].var, &post[idx[1]].var, &post[idx[2]].var};
         emit(w, var);
         continue;
       }
+      batch.flush(take);  // what was queued before this triangle goes first
       ++ch.stats.clipped;
       std::array<CV, 12> poly;
       std::array<WindowVertex, 12> pw;
@@ -175,6 +194,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
         emit(w, var);
       }
     }
+    batch.flush(take);
     ch.bins.bin(grid);
   });
 

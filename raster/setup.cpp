@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 
 #include "raster/limits.h"
 
@@ -157,6 +158,9 @@ SetupResult setup_triangle(const WindowVertex& v0, const WindowVertex& v1, const
   const WindowVertex& p1 = ccw ? v0 : v1;
   depth_plane(p0, p1, v2, p, out);
   out.prim = front ? 0u : kBackFacingBit;
+  int32_t coef = 0;  // the OR of non-negative values is below 2^n iff each one is
+  for (int k = 0; k < 3; ++k) coef |= std::abs(out.a[k]) | std::abs(out.b[k]);
+  out.flags = coef < (int32_t(1) << kNarrowCoefBits) ? kNarrowEdges : 0u;
   return SetupResult::visible;
 }
 

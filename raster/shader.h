@@ -8,6 +8,9 @@
 //     glm::vec4 vertex(const Vertex& v, Varyings& out) const;   // returns the clip-space position
 //     // Optional fragment stage, one 2×2 quad at a time (so it can take derivatives, see quad.h):
 //     void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const;
+//     // Optional wide form of the same fragment stage, two quads (4×2 pixels) in SIMD lanes (see quad.h). When
+//     // present the pipeline calls it instead of fragment(); it must compute, lane by lane, what fragment() does.
+//     void fragment_pair(const raster::QuadPairIn<Varyings>& q, raster::QuadPairOut& out) const;
 //     static constexpr bool kDiscards = false;     // may set QuadOut::discard   (default false)
 //     static constexpr bool kWritesDepth = false;  // writes QuadOut::depth      (default false)
 //   };
@@ -26,9 +29,6 @@ namespace raster {
 // Varyings of a shader that passes nothing to the fragment stage.
 struct NoVaryings {};
 
-template <class V>
-inline constexpr int kVaryingFloats = std::is_empty_v<V> ? 0 : int(sizeof(V) / sizeof(float));
-
 template <class S>
 concept VertexShader = requires(const S& s, const typename S::Vertex& v, typename S::Varyings& out) {
   { s.vertex(v, out) } -> std::convertible_to<glm::vec4>;
@@ -39,6 +39,11 @@ template <class S>
 concept HasFragmentStage = requires(const S& s, const QuadIn<typename S::Varyings>& q, QuadOut& o) {
   s.fragment(q, o);
 };
+
+// The shader has the wide fragment stage (fragment_pair) as well.
+template <class S>
+concept HasPairFragmentStage = HasFragmentStage<S> && requires(const S& s, const QuadPairIn<typename S::Varyings>& q,
+                                                               QuadPairOut& o) { s.fragment_pair(q, o); };
 
 template <class S>
 constexpr bool shader_discards() {

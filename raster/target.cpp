@@ -113,18 +113,4 @@ glm::vec4 ColorTarget::read(int x, int y) const {
   return c;
 }
 
-void ColorTarget::write(int x, int y, const glm::vec4& c) {
-  if (format_ == ColorFormat::rgba32f) {
-    float* p = row32f(y) + size_t(x) * 4;
-    p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = c.a;
-    return;
-  }
-  uint8_t* p = row8(y) + size_t(x) * 4;
-  for (int i = 0; i < 4; ++i) {
-    float v = std::clamp(c[i], 0.0f, 1.0f);
-    if (srgb_ && i < 3) v = srgb_encode(v);
-    p[i] = uint8_t(std::nearbyint(v * 255.0f));
-  }
-}
-
 }  // namespace raster

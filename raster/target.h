@@ -2,6 +2,8 @@
 // Memory is row-major with row 0 at the bottom (window y = 0, texture t = 0), rows padded to a multiple of the
 // tile size so that tile execution can work on whole aligned 8-pixel rows.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -14,6 +16,10 @@
 #include "raster/formats.h"
 
 namespace raster {
+
+// GL's sRGB transfer functions (exact formulas of the sRGB standard, in float).
+float srgb_encode(float linear);
+float srgb_decode(float encoded);
 
 // Thrown for a size of 0 or beyond kMaxTargetSize. The message names the offending dimension.
 struct TargetSizeError : std::invalid_argument {
@@ -91,8 +97,20 @@ class ColorTarget {
   // Linear colour at (x, y): unorm values divided by 255 (and decoded from sRGB when the target is sRGB).
   glm::vec4 read(int x, int y) const;
   // Stores a linear colour with GL's conversion: clamp to [0, 1], sRGB-encode if the target is sRGB, then
-  // round(c · 255) for RGBA8; RGBA32F stores the value unchanged.
-  void write(int x, int y, const glm::vec4& c);
+  // round(c · 255) for RGBA8; RGBA32F stores the value unchanged. Inline: shaded draws call it per pixel.
+  void write(int x, int y, const glm::vec4& c) {
+    if (format_ == ColorFormat::rgba32f) {
+      float* p = row32f(y) + size_t(x) * 4;
+      p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = c.a;
+      return;
+    }
+    uint8_t* p = row8(y) + size_t(x) * 4;
+    for (int i = 0; i < 4; ++i) {
+      float v = std::clamp(c[i], 0.0f, 1.0f);
+      if (srgb_ && i < 3) v = srgb_encode(v);
+      p[i] = uint8_t(std::nearbyint(v * 255.0f));
+    }
+  }
 
   uint8_t* row8(int y) { return reinterpret_cast<uint8_t*>(storage_.data()) + size_t(y) * size_t(pitch_) * 4; }
   const uint8_t* row8(int y) const {
@@ -113,9 +131,5 @@ class ColorTarget {
 // Checks a requested target size, throwing TargetSizeError with a message like
 // "width 0 is outside 1..16384" when it is out of range.
 void check_target_size(int width, int height);
-
-// GL's sRGB transfer functions (exact formulas of the sRGB standard, in float).
-float srgb_encode(float linear);
-float srgb_decode(float encoded);
 
 }  // namespace raster

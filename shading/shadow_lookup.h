@@ -24,12 +24,22 @@ struct PcfKernel {
   TextureLevel level;
   float border_depth;
   float operator()(glm::vec3 str) const { return detail::pcf_lequal<F, kBorderWrap>(level, str, border_depth); }
+  // Eight lookups in SIMD lanes (for fragment_pair shaders), each equal to the one-lookup form.
+  raster::simd::VecF32 operator()(raster::simd::VecF32 s, raster::simd::VecF32 t, raster::simd::VecF32 ref) const {
+    return detail::pcf_lequal_x8<F, kBorderWrap>(level, s, t, ref, border_depth);
+  }
 };
 // ... or the generic lookups for any other sampler.
 struct GenericShadowKernel {
   const Texture2D* texture;
   Sampler sampler;
   float operator()(glm::vec3 str) const { return shading::texture_at(*texture, sampler, str, 0.0f); }
+  raster::simd::VecF32 operator()(raster::simd::VecF32 s, raster::simd::VecF32 t, raster::simd::VecF32 ref) const {
+    alignas(32) float ps[8], pt[8], pr[8], out[8];
+    s.store(ps), t.store(pt), ref.store(pr);
+    for (int l = 0; l < 8; ++l) out[l] = (*this)(glm::vec3(ps[l], pt[l], pr[l]));
+    return raster::simd::VecF32::load(out);
+  }
 };
 
 class ShadowLookup2D {

@@ -86,4 +86,76 @@ inline Mask cmp_neq(VecI32 a, VecI32 b) { return and_not(Mask::all(), Mask{_mm25
 inline VecF32 select(Mask m, VecF32 a, VecF32 b) { return {_mm256_blendv_ps(a.v, b.v, _mm256_castsi256_ps(m.v))}; }
 inline VecI32 select(Mask m, VecI32 a, VecI32 b) { return {_mm256_blendv_epi8(a.v, b.v, m.v)}; }
 
+// ---- For the shaded back end's 4×2 pixel groups (lanes 0–3 one row, 4–7 the next) and its colour writes.
+// Lane l of the result is a's lane idx[l] (idx in 0..7).
+inline VecF32 permute(VecF32 a, VecI32 idx) { return {_mm256_permutevar8x32_ps(a.v, idx.v)}; }
+template <int N>
+inline VecI32 shift_left(VecI32 a) { return {_mm256_slli_epi32(a.v, N)}; }
+// Lanes 0–3 from four values at r0, lanes 4–7 from four at r1, and the reverse.
+inline VecF32 load_rows4(const float* r0, const float* r1) {
+  return {_mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(r0)), _mm_loadu_ps(r1), 1)};
+}
+inline void store_rows4(VecF32 a, float* r0, float* r1) {
+  _mm_storeu_ps(r0, _mm256_castps256_ps128(a.v));
+  _mm_storeu_ps(r1, _mm256_extractf128_ps(a.v, 1));
+}
+inline VecI32 load_rows4(const uint32_t* r0, const uint32_t* r1) {
+  return {_mm256_inserti128_si256(_mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(r0))),
+                                  _mm_loadu_si128(reinterpret_cast<const __m128i*>(r1)), 1)};
+}
+inline void store_rows4(VecI32 a, uint32_t* r0, uint32_t* r1) {
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(r0), _mm256_castsi256_si128(a.v));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(r1), _mm256_extracti128_si256(a.v, 1));
+}
+inline VecI32 load_rows4(const uint16_t* r0, const uint16_t* r1) {
+  const __m128i lo = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(r0));
+  const __m128i hi = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(r1));
+  return {_mm256_cvtepu16_epi32(_mm_unpacklo_epi64(lo, hi))};
+}
+// Lanes hold values in [0, 65535].
+inline void store_rows4(VecI32 a, uint16_t* r0, uint16_t* r1) {
+  const __m128i packed = _mm_packus_epi32(_mm256_castsi256_si128(a.v), _mm256_extracti128_si256(a.v, 1));
+  _mm_storel_epi64(reinterpret_cast<__m128i*>(r0), packed);
+  _mm_storel_epi64(reinterpret_cast<__m128i*>(r1), _mm_unpackhi_epi64(packed, packed));
+}
+// a / b, IEEE division per lane.
+inline VecF32 div(VecF32 a, VecF32 b) { return {_mm256_div_ps(a.v, b.v)}; }
+
+// ---- For the depth-only back end and the SIMD triangle setup.
+// The largest lane (lanes are not NaN).
+inline float reduce_max(VecF32 a) {
+  __m128 m = _mm_max_ps(_mm256_castps256_ps128(a.v), _mm256_extractf128_ps(a.v, 1));
+  m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+  m = _mm_max_ss(m, _mm_shuffle_ps(m, m, 1));
+  return _mm_cvtss_f32(m);
+}
+
+inline VecI32 min(VecI32 a, VecI32 b) { return {_mm256_min_epi32(a.v, b.v)}; }
+inline VecI32 max(VecI32 a, VecI32 b) { return {_mm256_max_epi32(a.v, b.v)}; }
+// Arithmetic shift right (floor division by 2^N).
+template <int N>
+inline VecI32 shift_right(VecI32 a) { return {_mm256_srai_epi32(a.v, N)}; }
+// Lane l of the result is base[idx[l]].
+inline VecI32 gather(const int32_t* base, VecI32 idx) { return {_mm256_i32gather_epi32(base, idx.v, 4)}; }
+inline VecF32 gather(const float* base, VecI32 idx) { return {_mm256_i32gather_ps(base, idx.v, 4)}; }
+
+// Transposes eight vectors in place: afterwards r[l] holds lane l of the eight inputs, in order.
+inline void transpose8(VecF32 (&r)[8]) {
+  __m256 t[8], s[8];
+  for (int i = 0; i < 4; ++i) {
+    t[2 * i] = _mm256_unpacklo_ps(r[2 * i].v, r[2 * i + 1].v);
+    t[2 * i + 1] = _mm256_unpackhi_ps(r[2 * i].v, r[2 * i + 1].v);
+  }
+  for (int h = 0; h < 2; ++h) {
+    s[4 * h + 0] = _mm256_shuffle_ps(t[4 * h + 0], t[4 * h + 2], 0x44);
+    s[4 * h + 1] = _mm256_shuffle_ps(t[4 * h + 0], t[4 * h + 2], 0xEE);
+    s[4 * h + 2] = _mm256_shuffle_ps(t[4 * h + 1], t[4 * h + 3], 0x44);
+    s[4 * h + 3] = _mm256_shuffle_ps(t[4 * h + 1], t[4 * h + 3], 0xEE);
+  }
+  for (int i = 0; i < 4; ++i) {
+    r[i].v = _mm256_permute2f128_ps(s[i], s[i + 4], 0x20);
+    r[i + 4].v = _mm256_permute2f128_ps(s[i], s[i + 4], 0x31);
+  }
+}
+
 }  // namespace raster::simd

@@ -73,4 +73,33 @@ inline Mask cmp_neq(VecI32 a, VecI32 b) { return lanes_where(a, b, [](int32_t x,
 inline VecF32 select(Mask m, VecF32 a, VecF32 b) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = (m.m >> i & 1) ? b.v[i] : a.v[i]; return r; }
 inline VecI32 select(Mask m, VecI32 a, VecI32 b) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = (m.m >> i & 1) ? b.v[i] : a.v[i]; return r; }
 
+// ---- For the shaded back end's 4×2 pixel groups and its colour writes (see vec_avx2.h).
+inline VecF32 permute(VecF32 a, VecI32 idx) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = a.v[idx.v[i] & 7]; return r; }
+template <int N>
+inline VecI32 shift_left(VecI32 a) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = int32_t(uint32_t(a.v[i]) << N); return r; }
+inline VecF32 load_rows4(const float* r0, const float* r1) { VecF32 r; std::memcpy(r.v, r0, 16); std::memcpy(r.v + 4, r1, 16); return r; }
+inline void store_rows4(VecF32 a, float* r0, float* r1) { std::memcpy(r0, a.v, 16); std::memcpy(r1, a.v + 4, 16); }
+inline VecI32 load_rows4(const uint32_t* r0, const uint32_t* r1) { VecI32 r; std::memcpy(r.v, r0, 16); std::memcpy(r.v + 4, r1, 16); return r; }
+inline void store_rows4(VecI32 a, uint32_t* r0, uint32_t* r1) { std::memcpy(r0, a.v, 16); std::memcpy(r1, a.v + 4, 16); }
+inline VecI32 load_rows4(const uint16_t* r0, const uint16_t* r1) { VecI32 r; for (int i = 0; i < 4; ++i) r.v[i] = r0[i], r.v[i + 4] = r1[i]; return r; }
+inline void store_rows4(VecI32 a, uint16_t* r0, uint16_t* r1) { for (int i = 0; i < 4; ++i) r0[i] = uint16_t(a.v[i]), r1[i] = uint16_t(a.v[i + 4]); }
+// a / b, IEEE division per lane.
+inline VecF32 div(VecF32 a, VecF32 b) { return VecF32::map(a, b, [](float x, float y) { return x / y; }); }
+
+// ---- For the depth-only back end and the SIMD triangle setup (see vec_avx2.h).
+inline float reduce_max(VecF32 a) { float m = a.v[0]; for (int i = 1; i < 8; ++i) m = a.v[i] > m ? a.v[i] : m; return m; }
+
+inline VecI32 min(VecI32 a, VecI32 b) { return VecI32::map(a, b, [](int32_t x, int32_t y) { return x < y ? x : y; }); }
+inline VecI32 max(VecI32 a, VecI32 b) { return VecI32::map(a, b, [](int32_t x, int32_t y) { return x > y ? x : y; }); }
+template <int N>
+inline VecI32 shift_right(VecI32 a) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = a.v[i] >> N; return r; }
+inline VecI32 gather(const int32_t* base, VecI32 idx) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = base[idx.v[i]]; return r; }
+inline VecF32 gather(const float* base, VecI32 idx) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = base[idx.v[i]]; return r; }
+
+inline void transpose8(VecF32 (&r)[8]) {
+  VecF32 o[8];
+  for (int i = 0; i < 8; ++i) for (int j = 0; j < 8; ++j) o[i].v[j] = r[j].v[i];
+  for (int i = 0; i < 8; ++i) r[i] = o[i];
+}
+
 }  // namespace raster::simd

@@ -5,6 +5,8 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/clip_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/depth_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/state_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/setup_batch_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/quad_pair_test.cpp
 )
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::raster)
 # Conformance against Mesa llvmpipe needs the GL reference (tests/gl).

@@ -7,6 +7,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   shading/lighting_test.cpp
   shading/lod_test.cpp
   shading/mip_chain_test.cpp
+  shading/pcf_simd_test.cpp
   shading/proj_test.cpp
   shading/shadow_lookup_test.cpp
   shading/texel_format_test.cpp

@@ -1,0 +1,214 @@
+// Triangle setup eight at a time: the front end of a depth-only draw queues its unclipped triangles here, and
+// every eight are set up together with the SIMD value types — snapping tests, culling, bounding box, edges with
+// the tie rule and llvmpipe's depth plane — giving exactly what setup_triangle() gives for each (setup.cpp).
+// Lanes whose snapped extent is too wide for the int32 edge arithmetic below go through setup_triangle().
+#pragma once
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+
+#include "raster/limits.h"
+#include "raster/primitive.h"
+#include "raster/setup.h"
+#include "raster/simd/vec.h"
+
+namespace raster {
+
+// ---- Why int32 is exact here ---------------------------------------------------------------------------------
+// A lane is set up in SIMD when its snapped extent is below 2^kBatchExtentBits sub-pixel units in x and in y
+// (64 pixels). Then every edge coefficient |A|, |B| < 2^14; the doubled area is a difference of two products of
+// such differences, below 2^29. The edge constant is taken at the box's first pixel (mx, my), whose centre
+// 256·mx + 128 lies within [xmin, xmax] for a triangle that is not outside (setup.cpp's box: the centres between
+// the snapped extremes, clamped to the draw's rectangle), so E = A·(256·mx + 128 − X_a) + B·(256·my + 128 − Y_a)
+// is below 2 · 2^14 · 2^14 = 2^29; F0 = floor((E − bias) / 256) is the edge's F at that pixel, and setup.cpp's
+// T = ceil((bias − C) / 256) equals A·mx + B·my − F0 (both are the same floor, shifted by the integer
+// A·mx + B·my), below 2^28 + 2^28 + 2^21 since pixel indices are below kMaxTargetSize = 2^14.
+inline constexpr int kBatchExtentBits = 14;
+static_assert(2 * (int64_t(1) << (2 * kBatchExtentBits)) < (int64_t(1) << 31), "area and edge values in int32");
+static_assert(kMaxTargetSize <= (1 << kBatchExtentBits), "A·mx fits 2^28");
+static_assert(kBatchExtentBits <= kNarrowCoefBits, "every batched triangle takes the narrow path");
+static_assert(2 * (int64_t(1) << 28) + (int64_t(1) << 21) < (int64_t(1) << 31), "T in int32");
+// Gather offsets are vertex index · 6 floats (WindowVertex), in int32: the batch is used when that fits.
+static_assert(sizeof(WindowVertex) == 6 * sizeof(float));
+inline constexpr size_t kBatchMaxVertices = size_t(1) << 28;
+
+class SetupBatch {
+ public:
+  SetupBatch(const SetupParams& p, const WindowVertex* win) : p_(p), win_(win) {
+    has_offset_ = p.offset.factor != 0.0f || p.offset.units != 0.0f;
+    if (p.format != DepthFormat::d32f) {
+      const double mrd = 1.0 / double(depth_max_code(p.format));
+      unorm_units_ = float(double(p.offset.units) * mrd * 2.0);  // setup.cpp: one rounding, from double
+    }
+  }
+
+  // Queues the unclipped triangle with vertices (i0, i1, i2) of the window-space array; sets up eight at a time
+  // and hands each result to sink(SetupResult, const TriangleSetup&), in queue order.
+  template <class Sink>
+  void push(uint32_t i0, uint32_t i1, uint32_t i2, Sink&& sink) {
+    idx_[0][n_] = int32_t(i0), idx_[1][n_] = int32_t(i1), idx_[2][n_] = int32_t(i2);
+    if (++n_ == 8) flush(sink);
+  }
+
+  // Sets up whatever is queued (a partial batch before a clipped triangle, to keep submission order).
+  template <class Sink>
+  void flush(Sink&& sink) {
+    if (n_ == 0) return;
+    for (int l = n_; l < 8; ++l) idx_[0][l] = idx_[1][l] = idx_[2][l] = idx_[0][0];  // harmless repeats
+    run();
+    for (int l = 0; l < n_; ++l) {
+      if (!(simd_lanes_ >> l & 1u)) {
+        TriangleSetup t;
+        const SetupResult r = setup_triangle(win_[idx_[0][l]], win_[idx_[1][l]], win_[idx_[2][l]], p_, t);
+        sink(r, t);
+        continue;
+      }
+      sink(SetupResult(result_[l]), staged_[l]);  // the record is looked at only when visible
+    }
+    n_ = 0;
+  }
+
+ private:
+  void run();
+
+  SetupParams p_;
+  const WindowVertex* win_;
+  bool has_offset_ = false;
+  float unorm_units_ = 0.0f;
+  int n_ = 0;
+  alignas(32) int32_t idx_[3][8];
+  // Results of run(), lane by lane.
+  unsigned simd_lanes_ = 0;  // lanes set up here; the others go through setup_triangle()
+  alignas(32) int32_t result_[8];
+  alignas(32) TriangleSetup staged_[8];  // lane l's record, written by three 8 × 8 transposes
+};
+
+// The record as 24 dwords, three groups of eight, in the order run() builds them.
+static_assert(offsetof(TriangleSetup, t) == 0 && offsetof(TriangleSetup, a) == 24 && offsetof(TriangleSetup, b) == 36 &&
+              offsetof(TriangleSetup, min_x) == 48 && offsetof(TriangleSetup, min_y) == 52 &&
+              offsetof(TriangleSetup, max_x) == 56 && offsetof(TriangleSetup, max_y) == 60 &&
+              offsetof(TriangleSetup, z_a0) == 64 && offsetof(TriangleSetup, dzdx) == 68 &&
+              offsetof(TriangleSetup, dzdy) == 72 && offsetof(TriangleSetup, z_offset) == 76 &&
+              offsetof(TriangleSetup, prim) == 80 && offsetof(TriangleSetup, flags) == 84 &&
+              sizeof(TriangleSetup) == 96);
+
+inline void SetupBatch::run() {
+  using simd::Mask;
+  using simd::VecF32;
+  using simd::VecI32;
+  const float* wf = reinterpret_cast<const float*>(win_);
+  const int32_t* wi = reinterpret_cast<const int32_t*>(win_);
+  VecF32 x[3], y[3], z[3];
+  VecI32 sx[3], sy[3];
+  for (int v = 0; v < 3; ++v) {
+    const VecI32 base = VecI32::load(idx_[v]) * VecI32::splat(6);
+    x[v] = simd::gather(wf, base);
+    y[v] = simd::gather(wf + 1, base);
+    z[v] = simd::gather(wf + 2, base);
+    sx[v] = simd::gather(wi + 4, base);
+    sy[v] = simd::gather(wi + 5, base);
+  }
+  const VecI32 xmin = simd::min(simd::min(sx[0], sx[1]), sx[2]), xmax = simd::max(simd::max(sx[0], sx[1]), sx[2]);
+  const VecI32 ymin = simd::min(simd::min(sy[0], sy[1]), sy[2]), ymax = simd::max(simd::max(sy[0], sy[1]), sy[2]);
+  const VecI32 limit = VecI32::splat(1 << kBatchExtentBits);
+  const Mask narrow = simd::cmp_lt(xmax - xmin, limit) & simd::cmp_lt(ymax - ymin, limit);
+  simd_lanes_ = narrow.bits();
+  if (simd_lanes_ == 0) return;
+
+  // Culling from the doubled signed area (exact in int32 for narrow lanes).
+  const VecI32 zero = VecI32::splat(0);
+  const VecI32 area2 = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sx[2] - sx[0]) * (sy[1] - sy[0]);
+  const Mask degenerate = simd::cmp_eq(area2, zero);
+  const Mask ccw = simd::cmp_lt(zero, area2);
+  const Mask front = p_.front_face == FrontFace::ccw ? ccw : and_not(Mask::all(), ccw);
+  const Mask culled = p_.cull == CullMode::back    ? and_not(Mask::all(), front)
+                      : p_.cull == CullMode::front ? front
+                                                   : Mask::from_bits(0);
+
+  // Pixel bounding box, as setup.cpp.
+  constexpr int32_t half = kSubpixelScale / 2;
+  const VecI32 min_x = simd::max(VecI32::splat(p_.clip.x0),
+                                 simd::shift_right<kSubpixelBits>(xmin + VecI32::splat(kSubpixelScale - 1 - half)));
+  const VecI32 max_x = simd::min(VecI32::splat(p_.clip.x1), simd::shift_right<kSubpixelBits>(xmax - VecI32::splat(half)));
+  const VecI32 min_y = simd::max(VecI32::splat(p_.clip.y0),
+                                 simd::shift_right<kSubpixelBits>(ymin + VecI32::splat(kSubpixelScale - 1 - half)));
+  const VecI32 max_y = simd::min(VecI32::splat(p_.clip.y1), simd::shift_right<kSubpixelBits>(ymax - VecI32::splat(half)));
+  const Mask outside = simd::cmp_lt(max_x, min_x) | simd::cmp_lt(max_y, min_y);
+
+  // The outcome in setup_triangle()'s order of tests.
+  VecI32 result = VecI32::splat(int32_t(SetupResult::visible));
+  result = simd::select(outside, result, VecI32::splat(int32_t(SetupResult::outside)));
+  result = simd::select(culled, result, VecI32::splat(int32_t(SetupResult::culled)));
+  result = simd::select(degenerate, result, VecI32::splat(int32_t(SetupResult::degenerate)));
+  result.store_u32(reinterpret_cast<uint32_t*>(result_));
+  VecF32 rec[24];  // the records' dwords (see the static_assert above), lane by lane
+  rec[12] = simd::bitcast_f32(min_x), rec[13] = simd::bitcast_f32(min_y);
+  rec[14] = simd::bitcast_f32(max_x), rec[15] = simd::bitcast_f32(max_y);
+  rec[20] = simd::bitcast_f32(simd::select(front, VecI32::splat(int32_t(kBackFacingBit)), zero));
+  rec[21] = simd::bitcast_f32(VecI32::splat(int32_t(kNarrowEdges)));  // |A|, |B| < 2^kBatchExtentBits
+  rec[22] = rec[23] = simd::bitcast_f32(zero);
+
+  // Edges of the counter-clockwise ordering (a, b, c) = (v0, v1, v2) or (v0, v2, v1), with the tie rule.
+  const VecI32 ex[3] = {sx[0], simd::select(ccw, sx[2], sx[1]), simd::select(ccw, sx[1], sx[2])};
+  const VecI32 ey[3] = {sy[0], simd::select(ccw, sy[2], sy[1]), simd::select(ccw, sy[1], sy[2])};
+  const VecI32 cx = simd::shift_left<kSubpixelBits>(min_x) + VecI32::splat(half);  // centre of the box's first pixel
+  const VecI32 cy = simd::shift_left<kSubpixelBits>(min_y) + VecI32::splat(half);
+  for (int k = 0; k < 3; ++k) {
+    const VecI32 xa = ex[k], ya = ey[k], xb = ex[(k + 1) % 3], yb = ey[(k + 1) % 3];
+    const VecI32 A = ya - yb, B = xb - xa;
+    const Mask inclusive = simd::cmp_lt(zero, A) | (simd::cmp_eq(A, zero) & simd::cmp_lt(zero, B));
+    const VecI32 bias = simd::select(inclusive, VecI32::splat(1), zero);
+    const VecI32 E = A * (cx - xa) + B * (cy - ya);
+    const VecI32 F0 = simd::shift_right<kSubpixelBits>(E - bias);
+    const VecI32 T = A * min_x + B * min_y - F0;
+    rec[2 * k] = simd::bitcast_f32(T);  // int64 little-endian: low half, then the sign
+    rec[2 * k + 1] = simd::bitcast_f32(simd::shift_right<31>(T));
+    rec[6 + k] = simd::bitcast_f32(A);
+    rec[9 + k] = simd::bitcast_f32(B);
+  }
+
+  // Depth plane and polygon offset in llvmpipe's vertex order and float operations (setup.cpp, depth_plane).
+  const VecF32 p0x = simd::select(ccw, x[0], x[1]), p0y = simd::select(ccw, y[0], y[1]);
+  const VecF32 p0z = simd::select(ccw, z[0], z[1]);
+  const VecF32 p1x = simd::select(ccw, x[1], x[0]), p1y = simd::select(ccw, y[1], y[0]);
+  const VecF32 p1z = simd::select(ccw, z[1], z[0]);
+  const VecF32 dx01 = p0x - p1x, dy01 = p0y - p1y;
+  const VecF32 dx20 = x[2] - p0x, dy20 = y[2] - p0y;
+  const VecF32 e = dx01 * dy20, f = dy01 * dx20;
+  const VecF32 ooa = simd::div(VecF32::splat(1.0f), e - f);
+  const VecF32 dx20o = dx20 * ooa, dy20o = dy20 * ooa, dx01o = dx01 * ooa, dy01o = dy01 * ooa;
+  const VecF32 dz01 = p0z - p1z, dz20 = z[2] - p0z;
+  const VecF32 dzdx = dz01 * dy20o - dz20 * dy01o;
+  const VecF32 dzdy = dz20 * dx01o - dz01 * dx20o;
+  const VecF32 x0c = p0x - VecF32::splat(0.5f), y0c = p0y - VecF32::splat(0.5f);
+  rec[16] = p0z - (dzdx * x0c + dzdy * y0c);
+  rec[17] = dzdx;
+  rec[18] = dzdy;
+  VecF32 z_offset = VecF32::splat(0.0f);
+  if (has_offset_) {
+    const VecI32 abs_bits = VecI32::splat(0x7fffffff);
+    auto fabs = [&](VecF32 v) { return simd::bitcast_f32(simd::bitcast_i32(v) & abs_bits); };
+    const VecF32 ox = fabs((dz20 * dy01 - dy20 * dz01) * ooa);
+    const VecF32 oy = fabs((dx20 * dz01 - dz20 * dx01) * ooa);
+    const VecF32 m = simd::select(simd::cmp_lt(oy, ox) | simd::cmp_neq(ox, ox), oy, ox);  // LLVMRealUGT select
+    const VecF32 mult = m * VecF32::splat(p_.offset.factor);
+    VecF32 units = VecF32::splat(unorm_units_);
+    if (p_.format == DepthFormat::d32f) {
+      auto std_max = [](VecF32 a, VecF32 b) { return simd::select(simd::cmp_lt(a, b), a, b); };  // (a < b) ? b : a
+      const VecF32 zmax = std_max(fabs(z[2]), std_max(fabs(p0z), fabs(p1z)));
+      const VecI32 bits = (simd::bitcast_i32(zmax) & VecI32::splat(0x7f800000)) - VecI32::splat(23 << 23);
+      units = simd::bitcast_f32(simd::max(bits, zero)) * VecF32::splat(p_.offset.units);
+    }
+    z_offset = units + mult;
+  }
+  rec[19] = z_offset;
+  float* out = reinterpret_cast<float*>(staged_);
+  for (int g = 0; g < 3; ++g) {
+    VecF32 group[8];
+    for (int i = 0; i < 8; ++i) group[i] = rec[8 * g + i];
+    simd::transpose8(group);
+    for (int l = 0; l < 8; ++l) group[l].store(out + l * 24 + 8 * g);
+  }
+}
+
+}  // namespace raster

@@ -1,0 +1,107 @@
+// The eight-lane PCF kernel (pcf_lequal_x8, PcfKernel's SIMD form, what fragment_pair shaders call) equals the
+// scalar kernel lane by lane, bit for bit: every fast-path format and wrap, textures as views of padded targets
+// and as tightly packed storage, sizes down to one texel, coordinates inside, on texel centres, on and beyond
+// every edge and corner, and non-finite.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "raster/simd/vec.h"
+#include "raster/target.h"
+#include "shading/shadow_lookup.h"
+
+namespace {
+
+using raster::simd::VecF32;
+using shading::TexelFormat;
+using shading::Texture2D;
+
+constexpr float kBorder = 0.75f;
+
+template <TexelFormat F, bool kBorderWrap>
+void expect_lanes_match(const Texture2D& tex, const std::vector<glm::vec3>& pts, const char* what) {
+  const shading::PcfKernel<F, kBorderWrap> kernel{tex.level(0), kBorder};
+  for (size_t k = 0; k + 8 <= pts.size(); k += 8) {
+    alignas(32) float s[8], t[8], r[8], out[8];
+    for (int l = 0; l < 8; ++l) s[l] = pts[k + l].x, t[l] = pts[k + l].y, r[l] = pts[k + l].z;
+    kernel(VecF32::load(s), VecF32::load(t), VecF32::load(r)).store(out);
+    for (int l = 0; l < 8; ++l) {
+      const glm::vec3 p = pts[k + l];
+      const float scalar = shading::detail::pcf_lequal_scalar<F, kBorderWrap>(tex.level(0), p, kBorder);
+      ASSERT_EQ(std::bit_cast<uint32_t>(out[l]), std::bit_cast<uint32_t>(scalar))
+          << what << " " << tex.width() << "x" << tex.height() << (kBorderWrap ? " border" : " edge") << " at ("
+          << p.x << ", " << p.y << ", " << p.z << ")";
+      ASSERT_EQ(std::bit_cast<uint32_t>(kernel(p)), std::bit_cast<uint32_t>(scalar));
+    }
+  }
+}
+
+// Coordinates for a w×h texture: random ones over and around it, and for every texel boundary and centre on
+// both axes (which puts lanes on each edge and corner), plus far-away and non-finite values.
+std::vector<glm::vec3> coordinates(int w, int h, std::mt19937& rng) {
+  std::uniform_real_distribution<float> coord(-0.3f, 1.3f), ref(-0.1f, 1.1f);
+  std::vector<glm::vec3> pts;
+  for (int k = 0; k < 4000; ++k) pts.emplace_back(coord(rng), coord(rng), ref(rng));
+  std::vector<float> xs, ys;
+  for (int i = -1; i <= w + 1; ++i) xs.insert(xs.end(), {float(i) / float(w), (float(i) + 0.5f) / float(w)});
+  for (int j = -1; j <= h + 1; ++j) ys.insert(ys.end(), {float(j) / float(h), (float(j) + 0.5f) / float(h)});
+  for (float x : xs)
+    for (float y : ys) pts.emplace_back(x, y, ref(rng));
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  for (glm::vec3 q : {glm::vec3(1e9f, -1e9f, 0.5f), glm::vec3(-inf, inf, 0.5f), glm::vec3(nan, 0.5f, 0.5f),
+                      glm::vec3(0.5f, nan, 0.5f), glm::vec3(0.5f, 0.5f, nan), glm::vec3(0.3f, 0.7f, 1.5f),
+                      glm::vec3(0.3f, 0.7f, -0.5f), glm::vec3(-1e-7f, 1.0f + 1e-7f, 0.5f)})
+    pts.push_back(q);
+  std::shuffle(pts.begin(), pts.end(), rng);  // mix edge lanes with inside lanes in one call
+  while (pts.size() % 8) pts.emplace_back(0.5f, 0.5f, 0.5f);
+  return pts;
+}
+
+template <TexelFormat F>
+void check_format(const Texture2D& tex, std::mt19937& rng, const char* what) {
+  const std::vector<glm::vec3> pts = coordinates(tex.width(), tex.height(), rng);
+  expect_lanes_match<F, false>(tex, pts, what);
+  expect_lanes_match<F, true>(tex, pts, what);
+}
+
+TEST(PcfSimd, EightLanesEqualTheScalarKernelOnTargetViews) {
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+  for (auto [w, h] : {std::pair{37, 23}, {64, 64}, {1, 9}, {9, 1}, {1, 1}, {2, 2}, {65, 3}}) {
+    for (raster::DepthFormat f : {raster::DepthFormat::d16, raster::DepthFormat::d24, raster::DepthFormat::d32f}) {
+      raster::DepthTarget target(w, h, f);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const float z = depth(rng);
+          if (f == raster::DepthFormat::d16) target.row<uint16_t>(y)[x] = uint16_t(z * 65535.0f);
+          if (f == raster::DepthFormat::d24) target.row<uint32_t>(y)[x] = uint32_t(z * 16777215.0f) | 0xAB000000u;
+          if (f == raster::DepthFormat::d32f) target.row<float>(y)[x] = z;
+        }
+      const Texture2D tex = Texture2D::view(target);
+      switch (f) {
+        case raster::DepthFormat::d16: check_format<TexelFormat::d16>(tex, rng, "d16 view"); break;
+        case raster::DepthFormat::d24: check_format<TexelFormat::d24>(tex, rng, "d24 view"); break;
+        case raster::DepthFormat::d32f: check_format<TexelFormat::d32f>(tex, rng, "d32f view"); break;
+      }
+    }
+  }
+}
+
+// Tightly packed storage: the last texel of the last row is the last float of the allocation, so a kernel that
+// read one texel too far would be caught by sanitizers and by the comparison.
+TEST(PcfSimd, EightLanesEqualTheScalarKernelOnPackedTextures) {
+  std::mt19937 rng(4242);
+  std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+  for (auto [w, h] : {std::pair{16, 16}, {5, 7}, {2, 1}, {1, 2}}) {
+    std::vector<float> z(size_t(w) * h);
+    for (float& v : z) v = depth(rng);
+    const Texture2D tex = Texture2D::from_floats(w, h, TexelFormat::d32f, 1, z);
+    check_format<TexelFormat::d32f>(tex, rng, "d32f packed");
+  }
+}
+
+}  // namespace
