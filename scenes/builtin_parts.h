@@ -16,7 +16,7 @@ Light light(std::string name, LightType type, ShadowTechnique technique);
 SceneDesc tutorial(bool spot);
 SceneDesc pyramid();
 SceneDesc paraboloid();
-SceneDesc projective(double time);
+SceneDesc projective(double time, int figures = 5);
 SceneDesc duel();
 
 }  // namespace scenes::builtin

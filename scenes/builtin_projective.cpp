@@ -1,6 +1,7 @@
 // The built-in `projective` scene: simple figures (body, head, hat) walking over uneven terrain, each marked as
 // a caster while the terrain only receives, for per-caster projective shadows. `time` (seconds) moves each
-// figure along its own circle, standing on the terrain surface and facing where it walks.
+// figure along its own circle, standing on the terrain surface and facing where it walks; up to five
+// `figures` are the default walkers, more stand in a crowd on a grid (the benchmarks' 10 and 100 casters).
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -46,7 +47,7 @@ ObjectDesc figure(int index, const Walk& w, const TerrainShape& ground, double t
 
 }  // namespace
 
-SceneDesc projective(double time) {
+SceneDesc projective(double time, int figures) {
   SceneDesc d;
   d.materials = {material("grass", {0.40f, 0.60f, 0.30f}, 0.05f, 2.0f), material("skin", {0.90f, 0.75f, 0.60f}),
                  material("red", {0.80f, 0.20f, 0.20f}),   material("blue", {0.20f, 0.35f, 0.85f}),
@@ -57,8 +58,19 @@ SceneDesc projective(double time) {
   terrain.casts_shadows = false;
   terrain.receives_shadows = true;
   d.objects.push_back(terrain);
-  int index = 0;
-  for (const Walk& w : kWalks) d.objects.push_back(figure(index++, w, ground, time));
+  if (figures <= 5) {
+    for (int i = 0; i < figures; ++i) d.objects.push_back(figure(i, kWalks[i], ground, time));
+  } else {
+    // A crowd (benchmarks): one figure per cell of a square grid over the middle 32 × 32 m, each on a small
+    // circle of its own, colours and speeds cycling through those of the five walkers.
+    const int side = int(std::ceil(std::sqrt(double(figures))));
+    const float cell = 32.0f / float(side);
+    for (int i = 0; i < figures; ++i) {
+      const Walk& base = kWalks[i % 5];
+      const glm::vec2 centre(-16.0f + cell * (float(i % side) + 0.5f), -16.0f + cell * (float(i / side) + 0.5f));
+      d.objects.push_back(figure(i, Walk{centre, 0.3f * cell, base.speed, float(i), base.colour}, ground, time));
+    }
+  }
   d.cameras.push_back(camera("main", {0.0f, 9.0f, 16.0f}, {0.0f, 0.0f, -1.0f}, 50.0f, 0.5f, 100.0f));
 
   Light sun = light("sun", LightType::directional, ShadowTechnique::projective);

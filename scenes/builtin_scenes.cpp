@@ -38,7 +38,11 @@ SceneDesc builtin_scene_desc(std::string_view name, const BuiltinParams& params)
   else if (name == "tutorial-spot") d = builtin::tutorial(true);
   else if (name == "pyramid") d = builtin::pyramid();
   else if (name == "paraboloid") d = builtin::paraboloid();
-  else if (name == "projective") d = builtin::projective(params.time);
+  else if (name == "projective") {
+    if (params.figures < 0 || params.figures > 10000)
+      throw SceneError(std::string(name), "figures", "must be between 0 and 10000");
+    d = builtin::projective(params.time, params.figures);
+  }
   else if (name == "duel") d = builtin::duel();
   else {
     std::string known;

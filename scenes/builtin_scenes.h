@@ -12,6 +12,8 @@ namespace scenes {
 // Parameters of a built-in scene; only animated scenes look at `time`.
 struct BuiltinParams {
   double time = 0.0;  // seconds
+  int figures = 5;    // `projective`: walking figures (casters), 0..10000; the first five walk as by default, more
+                      // than five walk small circles on a grid (benchmarks)
 };
 
 struct BuiltinInfo {

@@ -13,6 +13,7 @@
 #include "raster/shader.h"
 #include "shading/lighting.h"
 #include "shading/techniques/classic.h"
+#include "shading/techniques/omni_read.h"
 
 namespace frame {
 
@@ -23,19 +24,21 @@ struct CameraVertex {
 
 // How a light's shadow is read in the camera pass. Each kind has a reader snapshotted once per frame and a
 // batch visibility function (per quad) that makes its run-time choices (filter, lookup) once per batch.
-enum class ShadowRead : uint8_t { none, classic };
+enum class ShadowRead : uint8_t { none, classic, omni };
 
 // One light as the camera pass reads it; the reader matching `read` is used.
 struct LightRecord {
   shading::Light light;
   ShadowRead read = ShadowRead::none;
   shading::tech::ClassicReader classic;
+  shading::tech::OmniReader omni;  // cube, paraboloid or pyramid
 };
 
 // Visibility of up to four points of a quad from one light; 1 where the light casts no shadow.
 inline void light_visibility(const LightRecord& l, std::span<const shading::tech::ShadowQuery> q, std::span<float> vis) {
   switch (l.read) {
     case ShadowRead::classic: shading::tech::classic_visibility(l.classic, q, vis); return;
+    case ShadowRead::omni: shading::tech::omni_visibility(l.omni, q, vis); return;
     case ShadowRead::none: break;
   }
   for (float& v : vis) v = 1.0f;

@@ -10,6 +10,8 @@
 
 #include "cli/frame/camera_shader.h"
 #include "cli/frame/frame_lights.h"
+#include "cli/frame/projective_shaders.h"
+#include "cli/frame/frame_omni.h"
 #include "scenes/camera_math.h"
 #include "scenes/scene_queries.h"
 
@@ -28,6 +30,7 @@ tech::Box to_box(const scenes::Aabb& a) { return tech::Box{a.min, a.max}; }
 struct LightMaps {
   ResolvedLight resolved;
   tech::ShadowMapSet set;
+  std::optional<OmniMaps> omni;  // cube, paraboloid or pyramid
 };
 
 std::vector<CameraVertex> camera_vertices(const scenes::Mesh& m) {
@@ -51,7 +54,8 @@ scenes::io::ExrMap exr_of(const tech::ShadowMapSet& set, const tech::ClassicSett
 
 }  // namespace
 
-Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, raster::Renderer& renderer) {
+Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, raster::Renderer& renderer,
+                   FrameCache* cache) {
   if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
     throw std::invalid_argument("--size: " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                                 " is outside 1..16384");
@@ -77,7 +81,14 @@ Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, rast
     auto lm = std::make_unique<LightMaps>();
     lm->resolved = resolve_light(scene.lights[i], options);
     const ResolvedLight& r = lm->resolved;
-    if (r.technique != "none" && !r.shadowed)
+    if (const auto plan = resolve_omni(scene.lights[i], r, options, i)) {
+      if (casters.positions.empty()) casters = scenes::flatten(scene, scenes::InstanceFilter::casters);
+      lm->omni = plan_omni(*plan);
+      frame.stats.draws += build_omni(renderer, *lm->omni, casters.positions, casters.indices);
+      ++frame.stats.maps_rendered;
+      frame.maps.push_back(omni_exr(*lm->omni));
+      frame.map_names.push_back("light" + std::to_string(i) + "-" + scene.lights[i].name);
+    } else if (r.technique != "none" && r.technique != "projective" && !r.shadowed)
       frame.notes.push_back("light " + std::to_string(i) + " (" + scene.lights[i].name + "): technique " +
                             r.technique + " is not built yet; drawn unshadowed");
     if (r.shadowed) {
@@ -99,6 +110,18 @@ Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, rast
     }
     lights.push_back(std::move(lm));
   }
+  // Per-caster projective maps (frame_projective.h), from the cache where nothing changed.
+  FrameCache local_cache;
+  ProjectiveFrame projective = prepare_projective(
+      scene,
+      ProjectiveOverrides{options.technique, options.projective_mode, options.shadow_size, options.projective_textures,
+                          options.export_maps},
+      ProjectiveView{view_proj, options.width, options.height}, renderer, (cache ? *cache : local_cache).projective);
+  frame.stats.maps_rendered += projective.stats.maps_rebuilt;
+  for (size_t m = 0; m < projective.maps.size(); ++m) {
+    frame.maps.push_back(std::move(projective.maps[m]));
+    frame.map_names.push_back(projective.map_names[m]);
+  }
   frame.stats.shadow_ms = ms_since(t_shadow);
 
   // ---- Camera pass.
@@ -110,6 +133,9 @@ Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, rast
     if (lm->resolved.shadowed) {
       rec.read = ShadowRead::classic;
       rec.classic = tech::make_classic_reader(lm->set, lm->resolved.classic, lm->resolved.settings);
+    } else if (lm->omni) {
+      rec.read = ShadowRead::omni;
+      rec.omni = omni_reader(*lm->omni);
     }
     records.push_back(rec);
   }
@@ -123,7 +149,8 @@ Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, rast
     shader.lights = records;
     shader.u.view_proj = view_proj;
     shader.u.eye = camera.position;
-    for (const scenes::Instance& inst : scene.instances) {
+    for (size_t index = 0; index < scene.instances.size(); ++index) {
+      const scenes::Instance& inst = scene.instances[index];
       const scenes::Mesh& mesh = scene.meshes.at(inst.mesh);
       const scenes::Material& mat = scene.materials.at(inst.material);
       if (mesh_vertices[inst.mesh].empty()) mesh_vertices[inst.mesh] = camera_vertices(mesh);
@@ -134,11 +161,14 @@ Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, rast
       shader.u.receives_shadows = inst.receives_shadows;
       raster::DrawState s;
       s.cull = mat.double_sided ? raster::CullMode::none : raster::CullMode::back;
-      frame.stats.draws += renderer.draw(raster::RenderTargets{&depth, &frame.color}, s, shader,
-                                         std::span<const CameraVertex>(mesh_vertices[inst.mesh]), mesh.indices);
+      // Drawn once, plus the projective maps overlapping it (projective_shaders.h).
+      frame.stats.draws += draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, shader,
+                                         std::span<const CameraVertex>(mesh_vertices[inst.mesh]),
+                                         std::span<const uint32_t>(mesh.indices), projective, index);
     }
   }
   frame.stats.camera_ms = ms_since(t_camera);
+  frame.stats.projective = std::move(projective.stats);
   return frame;
 }
 

@@ -8,6 +8,7 @@
 
 #include <glm/vec4.hpp>
 
+#include "cli/frame/frame_projective.h"
 #include "raster/renderer.h"
 #include "raster/target.h"
 #include "scenes/io/exr_map.h"
@@ -31,6 +32,13 @@ struct FrameOptions {
   std::optional<std::string> fit;        // directional light box: "auto" (fitted) or "fixed" (the tutorial's box)
   // Bias values (the mode is `bias`); each must be finite and >= 0 (offset factor/units: finite).
   std::optional<float> bias_constant, bias_slope, bias_slope_max, offset_factor, offset_units, normal_offset;
+  // Omnidirectional techniques (frame_omni.h): cube seamless filtering, the paraboloid's depth packing
+  // ("float" | "rgba8") and split plane ("light", "x", "-y", ... or a normal "a,b,c").
+  std::optional<bool> seamless;
+  std::optional<std::string> paraboloid_pack, split_plane;
+  std::optional<std::string> projective_mode;  // projective lights: multipass | single-pass
+  std::optional<int> projective_textures;      // projective single-pass: shadow textures per draw (1..8)
+  bool export_maps = true;                     // projective: one EXR record per caster in Frame::maps
   glm::vec4 clear_color{0.0f, 0.0f, 0.4f, 1.0f};  // the tutorial's glClearColor (alpha 1)
 };
 
@@ -38,6 +46,7 @@ struct FrameStats {
   double shadow_ms = 0, camera_ms = 0;  // wall time of the map passes and of the camera pass
   size_t maps_rendered = 0;
   raster::DrawStats draws;
+  ProjectiveStats projective;           // per-caster projective maps: cache use, draws per instance
 };
 
 struct Frame {
@@ -49,6 +58,9 @@ struct Frame {
 };
 
 // Throws std::invalid_argument with a message naming the option when an override is unknown or out of range.
-Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, raster::Renderer& renderer);
+// `cache` (optional) keeps per-caster projective maps across frames: only those whose light or caster
+// changed are rebuilt. Without it every map is built for this frame alone.
+Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, raster::Renderer& renderer,
+                   FrameCache* cache = nullptr);
 
 }  // namespace frame

@@ -26,6 +26,9 @@ struct ShadowPass {
 struct ShadowMapSet {
   // Targets are held by pointer so that texture views over them stay valid when the set is moved.
   std::vector<std::unique_ptr<raster::DepthTarget>> targets;
+  // Optional colour targets beside the depth targets (colors[i] goes with targets[i]; null or absent: none),
+  // for maps that store their depth in colour, e.g. the dual paraboloid's RGBA8 packing.
+  std::vector<std::unique_ptr<raster::ColorTarget>> colors;
   std::vector<ShadowPass> passes;
 };
 

@@ -13,6 +13,13 @@ constexpr std::array<std::string_view, 5> kBiasNames = {"none", "constant", "slo
 // The classic map of the tutorial: 1024² d16, hardware PCF, slope-scaled bias, front faces drawn.
 constexpr TechniqueDefaults kDefaults[] = {
     {"shadowmap", "window-depth", ClassicSettings{}},
+    // Per-caster projective maps (2000): 128² per caster, a black-on-white mask (no depth, so no bias).
+    {"projective", "caster-mask", ClassicSettings{.bias = {.kind = BiasKind::none}, .map_size = 128}},
+    // Omnidirectional maps (omni.h): distance / range written per fragment (cube, pyramid) or per vertex
+    // (paraboloid), so no polygon offset; d24 holds the distance to 1/16777215 of the range.
+    {"cube", "radial-distance", ClassicSettings{.map_size = 512, .depth_format = raster::DepthFormat::d24}},
+    {"paraboloid", "radial-distance", ClassicSettings{.map_size = 1024, .depth_format = raster::DepthFormat::d24}},
+    {"pyramid", "radial-distance", ClassicSettings{.map_size = 1024, .depth_format = raster::DepthFormat::d24}},
 };
 }  // namespace
 

@@ -1,6 +1,6 @@
 // Every built-in scene renders through the frame renderer: a frame that is not just the clear colour, finite,
-// with a shadow map for every light using the classic technique (the omnidirectional and projective
-// techniques are not built yet: such lights are drawn unshadowed and the frame says so).
+// with a shadow map for every light using the classic technique, and one map (one EXR) for every point or
+// hemispherical light using cube, paraboloid or pyramid.
 #include <gtest/gtest.h>
 
 #include "cli/frame/frame.h"
@@ -28,5 +28,17 @@ TEST(BuiltinRender, EveryBuiltinSceneRenders) {
       has_shadowed_light |= l.shadow.technique == scenes::ShadowTechnique::shadowmap &&
                             (l.type == scenes::LightType::directional || l.type == scenes::LightType::spot);
     if (has_shadowed_light) EXPECT_FALSE(f.maps.empty()) << info.name;
+    size_t omni = 0;
+    for (const auto& l : scene.lights) {
+      const auto t = l.shadow.technique;
+      const bool omni_technique = t == scenes::ShadowTechnique::cube || t == scenes::ShadowTechnique::paraboloid ||
+                                  t == scenes::ShadowTechnique::pyramid;
+      omni += omni_technique && (l.type == scenes::LightType::point || l.type == scenes::LightType::hemispherical);
+    }
+    size_t omni_maps = 0;
+    for (const auto& m : f.maps) omni_maps += m.encoding == "radial-distance";
+    EXPECT_EQ(omni_maps, omni) << info.name << ": every omnidirectional light has its map";
+    for (const auto& n : f.notes)
+      EXPECT_EQ(n.find("technique cube"), std::string::npos) << info.name << ": " << n;
   }
 }

@@ -5,5 +5,11 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/frustum_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/golden_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/bias_measure_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/projective_map_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/projective_outline_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_map_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_agreement_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_density_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_golden_test.cpp
 )
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::techniques shadowlab::frame)

@@ -1,0 +1,271 @@
+// Projective maps for a frame: settings, casters, the cache and the receivers' overlap lists (see
+// frame_projective.h).
+#include "cli/frame/frame_projective.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
+
+#include "scenes/scene_queries.h"
+#include "shading/techniques/technique_types.h"
+
+namespace frame {
+
+namespace tech = shading::tech;
+
+namespace {
+
+glm::vec3 transform_point(const glm::mat4& m, const glm::vec3& p) {
+  return glm::vec3(m[0]) * p.x + glm::vec3(m[1]) * p.y + glm::vec3(m[2]) * p.z + glm::vec3(m[3]);
+}
+
+// A number param within [lo, hi], or `fallback` when absent.
+double number_param(const scenes::ShadowSettings& s, const std::string& key, double fallback, double lo, double hi,
+                    const std::string& where) {
+  const auto it = s.params.find(key);
+  if (it == s.params.end()) return fallback;
+  const double* v = std::get_if<double>(&it->second);
+  if (!v || !std::isfinite(*v) || *v < lo || *v > hi)
+    throw std::invalid_argument(where + key + ": expected a number in [" + std::to_string(lo).substr(0, 4) + ", " +
+                                std::to_string(hi).substr(0, 4) + "]");
+  return *v;
+}
+
+// The world box of an instance from its mesh's model-space box (eight corners transformed): conservative,
+// and per instance rather than per vertex.
+tech::Box instance_box(const scenes::Aabb& mesh_box, const glm::mat4& m) {
+  tech::Box b;
+  if (mesh_box.empty()) return b;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 p{(i & 1) ? mesh_box.max.x : mesh_box.min.x, (i & 2) ? mesh_box.max.y : mesh_box.min.y,
+                      (i & 4) ? mesh_box.max.z : mesh_box.min.z};
+    const glm::vec3 w = transform_point(m, p);
+    b.min = glm::min(b.min, w), b.max = glm::max(b.max, w);
+  }
+  return b;
+}
+
+std::string file_stem(const std::string& s) {
+  std::string out;
+  for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '-';
+  return out;
+}
+
+tech::ProjectiveLight projector_of(const scenes::Light& l) {
+  tech::ProjectiveLight p;
+  p.directional = l.type == scenes::LightType::directional;
+  p.position = l.position;
+  p.direction = glm::normalize(l.direction);
+  return p;
+}
+
+}  // namespace
+
+tech::ProjectiveSettings resolve_projective(const scenes::ShadowSettings& s, const ProjectiveOverrides& o,
+                                            size_t light_index) {
+  const std::string where = "lights[" + std::to_string(light_index) + "].shadow.params.";
+  tech::ProjectiveSettings p;
+  p.map_size = o.shadow_size ? *o.shadow_size : int(s.map_size);
+  if (p.map_size < 1 || p.map_size > 16384)
+    throw std::invalid_argument("--shadow-size: " + std::to_string(p.map_size) + " is outside 1..16384");
+  std::string mode = "multipass";
+  if (const auto it = s.params.find("projective_mode"); it != s.params.end()) {
+    const auto* str = std::get_if<std::string>(&it->second);
+    if (!str || !tech::parse_projective_mode(*str))
+      throw std::invalid_argument(where + "projective_mode: expected \"multipass\" or \"single-pass\"");
+    mode = *str;
+  }
+  if (o.mode) {
+    if (!tech::parse_projective_mode(*o.mode))
+      throw std::invalid_argument("--projective-mode: unknown mode '" + *o.mode + "' (known: multipass, single-pass)");
+    mode = *o.mode;
+  }
+  p.mode = *tech::parse_projective_mode(mode);
+  p.caster_shade = float(number_param(s, "caster_shade", 0.0, 0.0, 1.0, where));
+  p.lod_bias = float(number_param(s, "lod_bias", 0.0, 0.0, 8.0, where));
+  p.fade_start = float(number_param(s, "fade_start", 0.0, 0.0, 1e6, where));
+  p.fade_end = float(number_param(s, "fade_end", 0.0, 0.0, 1e6, where));
+  if (s.params.count("fade_end") && p.fade_end <= p.fade_start)
+    throw std::invalid_argument(where + "fade_end: must be greater than fade_start");
+  const double n = number_param(s, "max_textures", 4.0, 1.0, kMaxProjectiveTextures, where);
+  if (n != std::floor(n)) throw std::invalid_argument(where + "max_textures: expected a whole number");
+  p.max_textures = int(n);
+  if (o.max_textures) {
+    if (*o.max_textures < 1 || *o.max_textures > kMaxProjectiveTextures)
+      throw std::invalid_argument("--projective-textures: " + std::to_string(*o.max_textures) + " is outside 1.." +
+                                  std::to_string(kMaxProjectiveTextures));
+    p.max_textures = *o.max_textures;
+  }
+  if (const auto it = s.params.find("decimate"); it != s.params.end()) {
+    const bool* b = std::get_if<bool>(&it->second);
+    if (!b) throw std::invalid_argument(where + "decimate: expected true or false");
+    p.decimate = *b;
+  }
+  return p;
+}
+
+raster::Rect shadow_scissor(const tech::CasterFrustum& f, const tech::Box& box, const ProjectiveView& view) {
+  const raster::Rect all{0, 0, view.width, view.height};
+  // The frustum cut at the box's far side: near-plane corners and corners at that depth, from NDC.
+  float far_depth = -std::numeric_limits<float>::infinity();
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 p{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                      (i & 4) ? box.max.z : box.min.z};
+    far_depth = std::max(far_depth, glm::dot(f.depth_row, glm::vec4(p, 1.0f)));
+  }
+  if (!(far_depth > f.near_depth)) return raster::Rect{};
+  const glm::vec4 zc = f.proj * glm::vec4(0.0f, 0.0f, -far_depth, 1.0f);
+  const float far_ndc = zc.z / zc.w;
+  const glm::mat4 inv = glm::inverse(f.proj * f.view);
+  // Window bounds of a set of world points; false when one is not in front of the camera.
+  auto bounds = [&](auto&& point, glm::vec2& lo, glm::vec2& hi) {
+    lo = glm::vec2(std::numeric_limits<float>::infinity()), hi = -lo;
+    for (int i = 0; i < 8; ++i) {
+      const glm::vec4 c = view.view_proj * glm::vec4(point(i), 1.0f);
+      if (!(c.w > 1e-6f)) return false;
+      const glm::vec2 w = (glm::vec2(c.x, c.y) / c.w * 0.5f + 0.5f) * glm::vec2(float(view.width), float(view.height));
+      lo = glm::min(lo, w), hi = glm::max(hi, w);
+    }
+    return true;
+  };
+  glm::vec2 blo, bhi, flo, fhi;
+  const bool box_ok = bounds([&](int i) {
+    return glm::vec3{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, (i & 4) ? box.max.z : box.min.z};
+  }, blo, bhi);
+  const bool frustum_ok = bounds([&](int i) {
+    const glm::vec4 w = inv * glm::vec4((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? far_ndc : -1.0f, 1.0f);
+    return glm::vec3(w) / w.w;
+  }, flo, fhi);
+  if (!box_ok && !frustum_ok) return all;
+  glm::vec2 lo = box_ok ? blo : flo, hi = box_ok ? bhi : fhi;
+  if (box_ok && frustum_ok) lo = glm::max(blo, flo), hi = glm::min(bhi, fhi);
+  // Whole pixels, one pixel of margin, clamped to the viewport.
+  const int x0 = std::max(0, int(std::floor(std::max(lo.x, -1.0f))) - 1);
+  const int y0 = std::max(0, int(std::floor(std::max(lo.y, -1.0f))) - 1);
+  const int x1 = std::min(view.width, int(std::ceil(std::min(hi.x, float(view.width) + 1.0f))) + 1);
+  const int y1 = std::min(view.height, int(std::ceil(std::min(hi.y, float(view.height) + 1.0f))) + 1);
+  if (x1 <= x0 || y1 <= y0) return raster::Rect{};
+  return raster::Rect{x0, y0, x1 - x0, y1 - y0};
+}
+
+ProjectiveFrame prepare_projective(const scenes::Scene& scene, const ProjectiveOverrides& o, const ProjectiveView& view,
+                                   raster::Renderer& renderer, tech::ProjectiveCache& cache) {
+  ProjectiveFrame pf;
+  pf.overlaps.resize(scene.instances.size());
+  pf.stats.receiver_draws.assign(scene.instances.size(), 0);
+  cache.begin_frame();
+
+  // Per mesh, computed once per frame and only when a projective light needs them.
+  std::vector<std::optional<uint64_t>> mesh_hash(scene.meshes.size());
+  std::vector<std::optional<scenes::Aabb>> mesh_box(scene.meshes.size());
+  auto hash_of = [&](uint32_t m) {
+    if (!mesh_hash[m]) mesh_hash[m] = tech::mesh_content_hash(scene.meshes[m].positions, scene.meshes[m].indices);
+    return *mesh_hash[m];
+  };
+  auto box_of = [&](uint32_t m) -> const scenes::Aabb& {
+    if (!mesh_box[m]) mesh_box[m] = scenes::mesh_bounds(scene.meshes[m]);
+    return *mesh_box[m];
+  };
+  // Casting instances grouped by top-level object, in scene order.
+  std::vector<std::vector<uint32_t>> by_object(scene.objects.size());
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    const scenes::Instance& inst = scene.instances[i];
+    if (!inst.casts_shadows) continue;
+    if (inst.object >= by_object.size()) by_object.resize(inst.object + 1);
+    by_object[inst.object].push_back(i);
+  }
+
+  bool first = true;
+  for (size_t li = 0; li < scene.lights.size(); ++li) {
+    const scenes::Light& light = scene.lights[li];
+    const std::string technique = o.technique ? *o.technique : std::string(scenes::to_string(light.shadow.technique));
+    if (technique != "projective") continue;
+    const tech::ProjectiveSettings s = resolve_projective(light.shadow, o, li);
+    pf.stats.active = true;
+    if (first) pf.mode = s.mode, pf.max_textures = s.max_textures, first = false;
+    const tech::ProjectiveLight projector = projector_of(light);
+    for (uint32_t obj = 0; obj < by_object.size(); ++obj) {
+      const std::vector<uint32_t>& members = by_object[obj];
+      if (members.empty()) continue;
+      std::vector<tech::CasterInstanceKey> keys;
+      for (uint32_t i : members) {
+        const scenes::Instance& inst = scene.instances[i];
+        keys.push_back({inst.transform, tech::caster_shade_for(s.caster_shade, scene.materials[inst.material].base_color.a),
+                        hash_of(inst.mesh)});
+      }
+      const uint64_t id = (uint64_t(li) << 32) | obj;
+      auto map = cache.get(id, tech::make_caster_key(projector, s, keys), [&] {
+        // Rebuilding: the caster's exact world bounds and world-space parts, one per instance.
+        std::vector<tech::CasterPart> parts;
+        tech::Box bounds;
+        for (size_t k = 0; k < members.size(); ++k) {
+          const scenes::Instance& inst = scene.instances[members[k]];
+          const scenes::Mesh& mesh = scene.meshes[inst.mesh];
+          tech::CasterPart part;
+          part.positions.reserve(mesh.positions.size());
+          for (const glm::vec3& p : mesh.positions) {
+            part.positions.push_back(transform_point(inst.transform, p));
+            bounds.min = glm::min(bounds.min, part.positions.back());
+            bounds.max = glm::max(bounds.max, part.positions.back());
+          }
+          part.indices = mesh.indices;
+          part.shade = keys[k].shade;
+          parts.push_back(std::move(part));
+        }
+        return tech::build_caster_map(renderer, projector, s, bounds, parts);
+      });
+      if (o.export_maps) {
+        scenes::io::ExrMap e = scenes::io::exr_map_from(*map->target, 0);
+        e.world_to_camera = map->frustum.view;
+        e.world_to_ndc = map->frustum.proj * map->frustum.view;
+        e.technique = "projective";
+        e.depth_format = "d32f";  // the mask as floats; there is no depth buffer
+        e.encoding = "caster-mask";
+        if (const auto d = tech::find_technique_defaults("projective")) e.encoding = std::string(d->encoding);
+        pf.maps.push_back(std::move(e));
+        const std::string object_name = obj < scene.objects.size() ? scene.objects[obj] : "object";
+        pf.map_names.push_back(file_stem("light" + std::to_string(li) + "-" + light.name + "-caster" +
+                                         std::to_string(obj) + "-" + object_name));
+      }
+      if (!map->frustum.valid) continue;
+      AppliedCaster c;
+      c.reader = tech::make_projective_reader(*map, s);
+      c.map = std::move(map);
+      c.light = li;
+      c.object = obj;
+      pf.casters.push_back(std::move(c));
+    }
+  }
+  cache.end_frame();
+  pf.stats.maps_rebuilt = cache.rebuilt();
+  pf.stats.maps_reused = cache.reused();
+  if (pf.casters.empty()) return pf;
+
+  // Receivers: each instance's box against every caster's frustum (never its own object's). A receiver inside
+  // a caster's own box (furniture in a room) is not behind that caster as far as boxes can tell: a whole-object
+  // silhouette would blacken it, so it is left out.
+  auto inside = [](const tech::Box& in, const tech::Box& out) {
+    return glm::all(glm::greaterThanEqual(in.min, out.min)) && glm::all(glm::lessThanEqual(in.max, out.max));
+  };
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    const scenes::Instance& inst = scene.instances[i];
+    if (!inst.receives_shadows) continue;
+    const tech::Box box = instance_box(box_of(inst.mesh), inst.transform);
+    for (uint32_t c = 0; c < pf.casters.size(); ++c) {
+      const tech::CasterFrustum& f = pf.casters[c].map->frustum;
+      if (pf.casters[c].object == inst.object || inside(box, pf.casters[c].map->bounds) || !tech::box_overlaps(f, box))
+        continue;
+      const raster::Rect scissor = shadow_scissor(f, box, view);
+      if (scissor.width > 0) pf.overlaps[i].push_back({c, scissor});
+    }
+  }
+  return pf;
+}
+
+}  // namespace frame

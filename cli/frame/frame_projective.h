@@ -1,0 +1,93 @@
+// The frame side of per-caster projective shadows: for every light whose technique is `projective`, one map per
+// caster (a top-level scene object with shadow-casting instances) taken from the cache or rebuilt, each
+// receiver instance's list of overlapping casters (its box against every caster's frustum), and the maps as
+// EXR. The camera pass then draws receivers through draw_receiver (projective_shaders.h).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "raster/renderer.h"
+#include "scenes/io/exr_map.h"
+#include "scenes/scene.h"
+#include "shading/techniques/projective_cache.h"
+#include "shading/techniques/projective_lookup.h"
+
+namespace frame {
+
+// What the projective technique did in one frame.
+struct ProjectiveStats {
+  bool active = false;                     // some light uses the projective technique
+  size_t maps_rebuilt = 0, maps_reused = 0;
+  size_t shadow_passes = 0;                // multiply passes drawn (multipass, or single-pass overflow)
+  std::vector<uint32_t> receiver_draws;    // per scene instance: draw calls of the camera pass
+};
+
+// State that lives across frames of one scene sequence: the projective maps and their keys.
+struct FrameCache {
+  shading::tech::ProjectiveCache projective;
+};
+
+// Command-line overrides that concern the projective technique.
+struct ProjectiveOverrides {
+  std::optional<std::string> technique;  // --technique for every light
+  std::optional<std::string> mode;       // --projective-mode: multipass | single-pass
+  std::optional<int> shadow_size;        // --shadow-size: the map side per caster
+  std::optional<int> max_textures;       // --projective-textures: single-pass textures per draw
+  bool export_maps = true;               // fill ProjectiveFrame::maps (EXR) for --maps
+};
+
+// One caster's map as the camera pass applies it.
+struct AppliedCaster {
+  std::shared_ptr<const shading::tech::CasterMap> map;  // keeps the reader's texture alive
+  shading::tech::ProjectiveReader reader;
+  size_t light = 0;
+  uint32_t object = 0;
+};
+
+// A caster overlapping a receiver, and the window rectangle its shadow on that receiver can reach (the
+// receiver's box and the caster's frustum cut at the box's far side, both projected): multiply passes are
+// scissored to it, since outside it the map reads white and multiplies by exactly 1.
+struct Overlap {
+  uint32_t caster = 0;  // index into ProjectiveFrame::casters
+  raster::Rect scissor;
+};
+
+// The camera the frame is seen through, for the overlaps' window rectangles.
+struct ProjectiveView {
+  glm::mat4 view_proj{1.0f};
+  int width = 1, height = 1;
+};
+
+struct ProjectiveFrame {
+  std::vector<AppliedCaster> casters;
+  std::vector<std::vector<Overlap>> overlaps;  // per scene instance, in caster order
+  shading::tech::ProjectiveMode mode = shading::tech::ProjectiveMode::multipass;
+  int max_textures = 4;
+  ProjectiveStats stats;
+  std::vector<scenes::io::ExrMap> maps;  // one per caster (when export_maps)
+  std::vector<std::string> map_names;
+};
+
+// The upper bound of single-pass textures per draw (the shader's fixed array of samplers).
+inline constexpr int kMaxProjectiveTextures = 8;
+
+// A light's projective settings: its map_size and `params` (projective_mode, caster_shade, lod_bias,
+// fade_start, fade_end, max_textures, decimate), then the overrides. Throws std::invalid_argument naming the
+// option or `lights[i].shadow.params.KEY` for a bad value.
+shading::tech::ProjectiveSettings resolve_projective(const scenes::ShadowSettings& s, const ProjectiveOverrides& o,
+                                                     size_t light_index);
+
+// Builds or reuses every projective light's caster maps (cache.begin_frame() … end_frame() inside) and the
+// overlap lists. A scene with no projective light gives empty lists (every instance drawn once).
+ProjectiveFrame prepare_projective(const scenes::Scene& scene, const ProjectiveOverrides& o, const ProjectiveView& view,
+                                   raster::Renderer& renderer, shading::tech::ProjectiveCache& cache);
+
+// The window rectangle (whole pixels, clamped to the viewport) holding every point of `box` that lies in the
+// frustum; the whole viewport when a corner is behind the camera; empty (width 0) when there is none.
+raster::Rect shadow_scissor(const shading::tech::CasterFrustum& f, const shading::tech::Box& box,
+                            const ProjectiveView& view);
+
+}  // namespace frame

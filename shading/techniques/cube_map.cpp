@@ -1,0 +1,66 @@
+// Planning, building and reader setup of the cube shadow map (see cube_map.h).
+#include "shading/techniques/cube_map.h"
+
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace shading::tech {
+
+namespace {
+const char* const kFaceLabels[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+}
+
+ShadowMapSet plan_cube_map(const OmniLight& light, const OmniSettings& s) {
+  const int n = s.map_size;
+  ShadowMapSet set;
+  set.targets.push_back(std::make_unique<raster::DepthTarget>(3 * n, 2 * n, s.depth_format));
+  const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, s.near_plane, light.range);
+  for (int f = 0; f < 6; ++f) {
+    ShadowPass p;
+    p.label = kFaceLabels[f];
+    p.viewport = raster::Rect{n * (f % 3), n * (f / 3), n, n};
+    p.view = cube_face_view(f, light.position);
+    p.proj = proj;
+    p.perspective = true;
+    set.passes.push_back(p);
+  }
+  return set;
+}
+
+raster::DrawStats build_cube_map(raster::Renderer& renderer, ShadowMapSet& set, const OmniLight& light,
+                                 const OmniSettings& s, std::span<const glm::vec3> positions,
+                                 std::span<const uint32_t> indices) {
+  return draw_omni_passes(renderer, set, positions, indices, s.cull_front, [&](const ShadowPass& p) {
+    return RadialDepthShader{p.proj * p.view, light.position, 1.0f / light.range};
+  });
+}
+
+TextureCube cube_texture(const ShadowMapSet& set) {
+  std::array<Texture2D, 6> faces;
+  for (int f = 0; f < 6; ++f) {
+    const ShadowPass& p = set.passes.at(size_t(f));
+    faces[size_t(f)] = Texture2D::view(*set.targets.at(p.target), p.viewport);
+  }
+  return TextureCube(std::move(faces));
+}
+
+OmniReader make_cube_reader(const ShadowMapSet& set, const OmniLight& light, const OmniSettings& s) {
+  OmniReader r;
+  r.kind = OmniKind::cube;
+  r.frame = light_frame(light.position, light.direction);
+  r.position = light.position;
+  r.direction = light.direction;
+  r.range = light.range;
+  r.hemispherical = light.hemispherical;
+  r.bias = s.bias;
+  r.filter_kind = s.filter;
+  r.filter = s.filter_params;
+  r.cube = cube_texture(set);
+  r.cube_linear = Sampler::pcf(CompareFunc::lequal, Wrap::clamp_to_edge, 1.0f);
+  r.cube_linear.seamless_cube = s.seamless;
+  r.cube_nearest = r.cube_linear;
+  r.cube_nearest.mag_filter = r.cube_nearest.min_filter = Filter::nearest;
+  return r;
+}
+
+}  // namespace shading::tech

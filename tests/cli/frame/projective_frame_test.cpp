@@ -1,0 +1,237 @@
+// Per-caster projective shadows through the frame renderer (cli/frame/frame_projective.*, projective_shaders.h):
+// receivers outside every caster frustum are drawn once; the cache rebuilds nothing for a still frame and
+// exactly the moved caster's map; multipass and single-pass frames agree within 1/255 (here: exactly); the
+// built-in `projective` scene's golden hash is bit-exact at 0, 1 and 2 threads; maps come out as EXR records;
+// bad params name their key.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "cli/frame/frame.h"
+#include "scenes/builtin_scenes.h"
+#include "scenes/scene_build.h"
+#include "scenes/scene_json.h"
+#include "tests/support.h"
+
+namespace {
+
+uint64_t fnv1a(const raster::ColorTarget& c) {
+  uint64_t h = 1469598103934665603ull;
+  for (int y = 0; y < c.height(); ++y) {
+    const uint8_t* row = c.row8(y);
+    for (int x = 0; x < c.width() * 4; ++x) h = (h ^ row[x]) * 1099511628211ull;
+  }
+  return h;
+}
+
+int max_difference(const raster::ColorTarget& a, const raster::ColorTarget& b) {
+  int d = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width() * 4; ++x) d = std::max(d, std::abs(int(a.row8(y)[x]) - int(b.row8(y)[x])));
+  return d;
+}
+
+// Debug aid: SHADOWLAB_GOLDEN_DUMP=dir writes a frame as a binary PPM (top row first).
+void dump(const raster::ColorTarget& c, const std::string& name) {
+  const char* dir = std::getenv("SHADOWLAB_GOLDEN_DUMP");
+  if (!dir) return;
+  std::FILE* f = std::fopen((std::string(dir) + "/" + name + ".ppm").c_str(), "wb");
+  if (!f) return;
+  std::fprintf(f, "P6\n%d %d\n255\n", c.width(), c.height());
+  for (int y = c.height() - 1; y >= 0; --y)
+    for (int x = 0; x < c.width(); ++x) std::fwrite(c.row8(y) + 4 * x, 1, 3, f);
+  std::fclose(f);
+}
+
+scenes::Scene scene_from(const std::string& json) {
+  return scenes::build_scene(scenes::parse_scene_json(json, "test.json"));
+}
+
+// Object 0: a floor under the box; object 1: a box caster 1 m above it; object 2: a second floor 20 m away,
+// outside the box's frustum; the sun straight down.
+const char* kTwoFloors = R"({
+  "objects": [
+    {"name": "floor", "primitive": {"type": "plane", "size": [6, 6]}, "casts_shadows": false},
+    {"name": "box", "primitive": {"type": "box", "size": [1, 1, 1]}, "transform": {"translate": [0, 1.5, 0]},
+     "receives_shadows": false},
+    {"name": "far", "primitive": {"type": "plane", "size": [6, 6]}, "transform": {"translate": [20, 0, 0]},
+     "casts_shadows": false}
+  ],
+  "cameras": [{"position": [10, 20, 12], "target": [10, 0, 0]}],
+  "lights": [{"type": "directional", "direction": [0, -1, 0],
+              "shadow": {"technique": "projective", "map_size": 64}}]
+})";
+
+frame::FrameOptions small(int w = 160, int h = 90) {
+  frame::FrameOptions o;
+  o.width = w;
+  o.height = h;
+  return o;
+}
+
+TEST(ProjectiveFrame, ReceiverOutsideEveryFrustumIsDrawnOnce) {
+  const scenes::Scene scene = scene_from(kTwoFloors);
+  ASSERT_EQ(scene.instances.size(), 3u);
+  raster::Renderer r(testsupport::test_threads());
+  for (const char* mode : {"multipass", "single-pass"}) {
+    frame::FrameOptions o = small();
+    o.projective_mode = mode;
+    const frame::Frame f = frame::render_frame(scene, o, r);
+    const auto& draws = f.stats.projective.receiver_draws;
+    ASSERT_EQ(draws.size(), 3u);
+    EXPECT_EQ(draws[0], std::string(mode) == "multipass" ? 2u : 1u) << mode;  // the floor under the box
+    EXPECT_EQ(draws[1], 1u) << mode;                                            // the caster itself
+    EXPECT_EQ(draws[2], 1u) << mode;                                            // the far floor: once, no shadow work
+    EXPECT_EQ(f.stats.projective.maps_rebuilt, 1u);
+  }
+}
+
+// A receiver inside a caster's box (furniture in a room) is not shadowed by that caster's silhouette.
+TEST(ProjectiveFrame, ReceiverInsideACastersBoxIsLeftOut) {
+  const scenes::Scene scene = scene_from(R"({
+    "objects": [
+      {"name": "shell", "primitive": {"type": "box", "size": [8, 8, 8]}, "receives_shadows": false,
+       "material": "glass"},
+      {"name": "inner", "primitive": {"type": "box", "size": [1, 1, 1]}, "casts_shadows": false}
+    ],
+    "materials": [{"name": "glass", "base_color": [1, 1, 1, 0.5], "double_sided": true}],
+    "cameras": [{"position": [0, 2, 3], "target": [0, 0, 0]}],
+    "lights": [{"type": "directional", "direction": [0, -1, 0],
+                "shadow": {"technique": "projective", "map_size": 32}}]
+  })");
+  raster::Renderer r(0);
+  const frame::Frame f = frame::render_frame(scene, small(), r);
+  ASSERT_EQ(f.stats.projective.receiver_draws.size(), 2u);
+  EXPECT_EQ(f.stats.projective.receiver_draws[1], 1u);
+}
+
+TEST(ProjectiveFrame, CacheRebuildsOnlyWhatMoved) {
+  raster::Renderer r(testsupport::test_threads());
+  frame::FrameCache cache;
+  scenes::Scene scene = scenes::builtin_scene("projective");
+  const frame::FrameOptions o = small();
+  const frame::Frame f1 = frame::render_frame(scene, o, r, &cache);
+  EXPECT_EQ(f1.stats.projective.maps_rebuilt, 5u);
+  EXPECT_EQ(f1.stats.projective.maps_reused, 0u);
+  const frame::Frame f2 = frame::render_frame(scene, o, r, &cache);
+  EXPECT_EQ(f2.stats.projective.maps_rebuilt, 0u);
+  EXPECT_EQ(f2.stats.projective.maps_reused, 5u);
+  EXPECT_EQ(fnv1a(f1.color), fnv1a(f2.color));
+  // Move one figure (every instance of top-level object 3): exactly its map is rebuilt.
+  for (scenes::Instance& inst : scene.instances)
+    if (inst.object == 3) inst.transform[3].x += 0.2f;
+  const frame::Frame f3 = frame::render_frame(scene, o, r, &cache);
+  EXPECT_EQ(f3.stats.projective.maps_rebuilt, 1u);
+  EXPECT_EQ(f3.stats.projective.maps_reused, 4u);
+  // The scene rebuilt at the same time (a new Scene object, equal content) reuses everything.
+  const frame::Frame f4 = frame::render_frame(scenes::builtin_scene("projective"), o, r, &cache);
+  EXPECT_EQ(f4.stats.projective.maps_rebuilt, 1u);  // object 3 back in place
+  const frame::Frame f5 = frame::render_frame(scenes::builtin_scene("projective", {1.0}), o, r, &cache);
+  EXPECT_EQ(f5.stats.projective.maps_rebuilt, 5u);  // everyone walked
+}
+
+TEST(ProjectiveFrame, MultipassEqualsSinglePass) {
+  raster::Renderer r(testsupport::test_threads());
+  scenes::Scene scene = scenes::builtin_scene("projective", {2.0});
+  // Blur and fade on, a grey shade, so every part of the lookup is exercised.
+  scene.lights[0].shadow.params["lod_bias"] = 1.5;
+  scene.lights[0].shadow.params["fade_start"] = 1.0;
+  scene.lights[0].shadow.params["fade_end"] = 4.0;
+  scene.lights[0].shadow.params["caster_shade"] = 0.2;
+  // Overlapping shadows: a second projective light from the other side.
+  scenes::Light second = scene.lights[0];
+  second.direction = glm::normalize(glm::vec3(0.7f, -1.0f, -0.4f));
+  scene.lights.push_back(second);
+  frame::FrameOptions o = small(320, 180);
+  o.projective_mode = "multipass";
+  const frame::Frame multi = frame::render_frame(scene, o, r);
+  size_t most = 0;
+  for (uint32_t d : multi.stats.projective.receiver_draws) most = std::max<size_t>(most, d);
+  EXPECT_GE(most, 3u);  // some receiver overlaps two casters or more
+  for (int textures : {4, 1}) {
+    o.projective_mode = "single-pass";
+    o.projective_textures = textures;
+    const frame::Frame single = frame::render_frame(scene, o, r);
+    const int d = max_difference(multi.color, single.color);
+    std::printf("multipass vs single-pass (%d textures): max difference %d/255\n", textures, d);
+    EXPECT_LE(d, 1);
+  }
+  // And the shadows are there: without them the frame differs.
+  o.technique = "none";
+  EXPECT_GT(max_difference(multi.color, frame::render_frame(scene, o, r).color), 50);
+}
+
+// Golden hash of the built-in `projective` scene at 320 × 180 (time 0, 256² maps per caster).
+constexpr uint64_t kGolden = 0x3d7f9934ae42422dull;
+
+TEST(ProjectiveFrame, GoldenBuiltinSceneAcrossThreadCounts) {
+  const scenes::Scene scene = scenes::builtin_scene("projective");
+  uint64_t first = 0;
+  for (int threads : {0, 1, 2}) {
+    for (const char* mode : {"multipass", "single-pass"}) {
+      raster::Renderer r(threads);
+      frame::FrameOptions o = small(320, 180);
+      o.projective_mode = mode;
+      const frame::Frame f = frame::render_frame(scene, o, r);
+      const uint64_t h = fnv1a(f.color);
+      if (threads == 0 && std::string(mode) == "multipass") {
+        first = h;
+        dump(f.color, "projective");
+      }
+      EXPECT_EQ(h, first) << "threads " << threads << " " << mode;
+    }
+  }
+  if (first != kGolden) {
+    std::printf("golden projective: new hash 0x%016llxull\n", static_cast<unsigned long long>(first));
+    ADD_FAILURE() << "projective: hash 0x" << std::hex << first << " expected 0x" << kGolden;
+  }
+}
+
+TEST(ProjectiveFrame, MapsAsExrRecords) {
+  raster::Renderer r(0);
+  const frame::Frame f = frame::render_frame(scenes::builtin_scene("projective"), small(), r);
+  size_t projective = 0;
+  for (size_t i = 0; i < f.maps.size(); ++i) {
+    if (f.maps[i].technique != "projective") continue;
+    ++projective;
+    EXPECT_EQ(f.maps[i].encoding, "caster-mask");
+    EXPECT_EQ(f.maps[i].width, 256);
+    EXPECT_NE(f.maps[i].world_to_ndc, glm::mat4(1.0f));
+    EXPECT_EQ(*std::max_element(f.maps[i].z.begin(), f.maps[i].z.end()), 1.0f);
+    EXPECT_EQ(*std::min_element(f.maps[i].z.begin(), f.maps[i].z.end()), 0.0f);
+    EXPECT_EQ(f.map_names[i].find(' '), std::string::npos) << f.map_names[i];
+  }
+  EXPECT_EQ(projective, 5u);
+  for (const std::string& note : f.notes) EXPECT_EQ(note.find("projective"), std::string::npos) << note;
+}
+
+TEST(ProjectiveFrame, BadParamsNameTheirKey) {
+  raster::Renderer r(0);
+  auto expect_bad = [&](const char* key, scenes::TechniqueParam value, const std::string& where) {
+    scenes::Scene scene = scene_from(kTwoFloors);
+    scene.lights[0].shadow.params[key] = value;
+    try {
+      frame::render_frame(scene, small(), r);
+      ADD_FAILURE() << key << ": accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(where, 0), 0u) << e.what();
+    }
+  };
+  expect_bad("caster_shade", 2.0, "lights[0].shadow.params.caster_shade: ");
+  expect_bad("caster_shade", std::string("dark"), "lights[0].shadow.params.caster_shade: ");
+  expect_bad("lod_bias", -1.0, "lights[0].shadow.params.lod_bias: ");
+  expect_bad("fade_end", 0.0, "lights[0].shadow.params.fade_end: ");
+  expect_bad("max_textures", 2.5, "lights[0].shadow.params.max_textures: ");
+  expect_bad("projective_mode", std::string("twice"), "lights[0].shadow.params.projective_mode: ");
+  expect_bad("decimate", 1.0, "lights[0].shadow.params.decimate: ");
+  scenes::Scene scene = scene_from(kTwoFloors);
+  frame::FrameOptions o = small();
+  o.projective_mode = "sometimes";
+  EXPECT_THROW(frame::render_frame(scene, o, r), std::invalid_argument);
+}
+
+}  // namespace

@@ -1,0 +1,105 @@
+// End-to-end tests of `shadowlab render` with per-caster projective shadows: the per-frame cache line of
+// --stats (still frames reuse every map, --animate rebuilds the moving ones), the maps as EXR, and bad values
+// of the projective options as one error line naming the option, exit code 2 and no output file.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "scenes/io/exr_map.h"
+#include "tests/support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Outcome shadowlab(const fs::path& dir, const std::string& args) {
+  const std::string cmd = "cd '" + dir.string() + "' && '" SHADOWLAB_CLI "' " + args + " >stdout.txt 2>stderr.txt";
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout.txt"), slurp(dir / "stderr.txt")};
+}
+
+// The `frame K: maps rebuilt R, reused U` lines of stdout, in order.
+std::vector<std::string> cache_lines(const std::string& out) {
+  std::vector<std::string> lines;
+  const std::regex line("^frame [0-9]+: maps rebuilt [0-9]+, reused [0-9]+$");
+  std::istringstream in(out);
+  for (std::string l; std::getline(in, l);)
+    if (std::regex_match(l, line)) lines.push_back(l);
+  return lines;
+}
+
+class ProjectiveCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = testsupport::temp_dir(std::string("projcli_") +
+                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  }
+  void expect_bad(const std::string& args, const std::string& where) {
+    const Outcome r = shadowlab(dir, args + " --out bad.png");
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_THAT(r.err, ::testing::MatchesRegex("shadowlab: error: [^\n]+: [^\n]+\n")) << args;
+    EXPECT_EQ(r.err.rfind("shadowlab: error: " + where + ": ", 0), 0u) << args << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(dir / "bad.png")) << args;
+  }
+  fs::path dir;
+};
+
+TEST_F(ProjectiveCli, StillFramesReuseEveryMap) {
+  const Outcome r = shadowlab(dir, "render projective --size 96x54 --threads 0 --frames 3 --stats --out f.png");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(cache_lines(r.out), (std::vector<std::string>{"frame 1: maps rebuilt 5, reused 0",
+                                                          "frame 2: maps rebuilt 0, reused 5",
+                                                          "frame 3: maps rebuilt 0, reused 5"}))
+      << r.out;
+  EXPECT_TRUE(fs::exists(dir / "f.png"));
+}
+
+TEST_F(ProjectiveCli, AnimatedFramesRebuildTheWalkers) {
+  const Outcome r = shadowlab(dir, "render projective --size 96x54 --threads 0 --frames 3 --animate --fps 24 "
+                                   "--stats --projective-mode single-pass --out f.png --maps maps");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(cache_lines(r.out), (std::vector<std::string>{"frame 1: maps rebuilt 5, reused 0",
+                                                          "frame 2: maps rebuilt 5, reused 0",
+                                                          "frame 3: maps rebuilt 5, reused 0"}))
+      << r.out;
+  size_t maps = 0;
+  for (const auto& e : fs::directory_iterator(dir / "maps")) {
+    const scenes::io::ExrMap m = scenes::io::read_exr_map(e.path());
+    EXPECT_EQ(m.technique, "projective") << e.path();
+    EXPECT_EQ(m.encoding, "caster-mask");
+    EXPECT_EQ(m.width, 256);
+    ++maps;
+  }
+  EXPECT_EQ(maps, 5u);
+}
+
+TEST_F(ProjectiveCli, BadValuesNameTheOption) {
+  expect_bad("render projective --size 32x18 --projective-mode twice", "--projective-mode");
+  expect_bad("render projective --size 32x18 --projective-textures 0", "--projective-textures");
+  expect_bad("render projective --size 32x18 --projective-textures 9", "--projective-textures");
+  expect_bad("render tutorial --size 32x18 --animate", "--animate");
+  expect_bad("render projective --size 32x18 --animate --fps 0", "--fps");
+  expect_bad("render projective --size 32x18 --animate --fps -2", "--fps");
+}
+
+}  // namespace

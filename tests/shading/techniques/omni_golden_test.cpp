@@ -1,0 +1,156 @@
+// Golden images of the omnidirectional techniques: the built-in `pyramid` (hemispherical ceiling lamp) and
+// `paraboloid` (point light among pillars) scenes with each of cube, paraboloid and pyramid, as content hashes
+// (FNV-1a of the RGBA8 pixels) that must be bit-exact at 0, 1 and 2 threads. When a hash differs the test
+// prints the new one to paste here after checking the image (SHADOWLAB_GOLDEN_DUMP=dir writes PPMs).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "cli/frame/frame.h"
+#include "scenes/builtin_scenes.h"
+
+namespace {
+
+uint64_t fnv1a(const raster::ColorTarget& c) {
+  uint64_t h = 1469598103934665603ull;
+  for (int y = 0; y < c.height(); ++y) {
+    const uint8_t* row = c.row8(y);
+    for (int x = 0; x < c.width() * 4; ++x) h = (h ^ row[x]) * 1099511628211ull;
+  }
+  return h;
+}
+
+void write_ppm(const raster::ColorTarget& c, const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return;
+  std::fprintf(f, "P6\n%d %d\n255\n", c.width(), c.height());
+  for (int y = c.height() - 1; y >= 0; --y)
+    for (int x = 0; x < c.width(); ++x) std::fwrite(c.row8(y) + 4 * x, 1, 3, f);
+  std::fclose(f);
+}
+
+struct Case {
+  const char* name;
+  const char* scene;
+  const char* technique;
+  const char* filter;
+  const char* pack;  // paraboloid depth packing, or null
+  uint64_t expected;
+};
+
+// 320 × 180, 512² maps (per face for the cube), slope bias, the scenes' d24.
+const Case kCases[] = {
+    {"pyramid_scene_cube", "pyramid", "cube", "pcf", nullptr, 0x47f411fdf12c88efull},
+    {"pyramid_scene_paraboloid", "pyramid", "paraboloid", "pcf", nullptr, 0x7f7d503f7be1447aull},
+    {"pyramid_scene_pyramid", "pyramid", "pyramid", "pcf", nullptr, 0xd88a8f3bcd11ba3eull},
+    {"pyramid_scene_pyramid_poisson", "pyramid", "pyramid", "rotated", nullptr, 0x5982c233cdab5cd3ull},
+    {"paraboloid_scene_cube", "paraboloid", "cube", "pcf", nullptr, 0xe16909e129d4a205ull},
+    {"paraboloid_scene_paraboloid", "paraboloid", "paraboloid", "pcf", nullptr, 0x6ad2db7cd3dd22e3ull},
+    {"paraboloid_scene_paraboloid_rgba8", "paraboloid", "paraboloid", "hard", "rgba8", 0x7c7e57be8f4eaa83ull},
+    {"paraboloid_scene_pyramid", "paraboloid", "pyramid", "pcf", nullptr, 0xa3b0cdabe7561e28ull},
+};
+
+class OmniGolden : public testing::TestWithParam<Case> {};
+
+TEST_P(OmniGolden, HashIsStableAcrossThreadCounts) {
+  const Case& c = GetParam();
+  const scenes::Scene scene = scenes::builtin_scene(c.scene);
+  frame::FrameOptions o;
+  o.width = 320;
+  o.height = 180;
+  o.technique = c.technique;
+  o.filter = c.filter;
+  o.shadow_size = 512;
+  if (c.pack) o.paraboloid_pack = c.pack;
+  uint64_t first = 0;
+  for (int threads : {0, 1, 2}) {
+    raster::Renderer r(threads);
+    const frame::Frame f = frame::render_frame(scene, o, r);
+    ASSERT_EQ(f.maps.size(), 1u);
+    EXPECT_TRUE(f.notes.empty());
+    const uint64_t h = fnv1a(f.color);
+    if (threads == 0) first = h;
+    if (const char* dir = std::getenv("SHADOWLAB_GOLDEN_DUMP"); dir && threads == 0)
+      write_ppm(f.color, std::string(dir) + "/" + c.name + ".ppm");
+    EXPECT_EQ(h, first) << c.name << ": threads " << threads << " differ from threads 0";
+  }
+  if (first != c.expected) {
+    std::printf("golden %s: new hash 0x%016llxull\n", c.name, static_cast<unsigned long long>(first));
+    ADD_FAILURE() << c.name << ": hash 0x" << std::hex << first << " expected 0x" << c.expected;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Omni, OmniGolden, testing::ValuesIn(kCases),
+                         [](const testing::TestParamInfo<Case>& i) { return std::string(i.param.name); });
+
+// The EXR of each technique: one image with every pass's viewport and matrices, radial-distance encoding.
+TEST(OmniFrame, MapsCarryEveryPass) {
+  const scenes::Scene scene = scenes::builtin_scene("paraboloid");
+  raster::Renderer r(0);
+  frame::FrameOptions o;
+  o.width = 64;
+  o.height = 36;
+  o.shadow_size = 64;
+  struct Want {
+    const char* technique;
+    int w, h;
+    size_t passes;
+  };
+  for (const Want& w : {Want{"cube", 192, 128, 6}, Want{"paraboloid", 128, 64, 2}, Want{"pyramid", 64, 64, 4}}) {
+    o.technique = w.technique;
+    const frame::Frame f = frame::render_frame(scene, o, r);
+    ASSERT_EQ(f.maps.size(), 1u);
+    const scenes::io::ExrMap& m = f.maps[0];
+    EXPECT_EQ(m.technique, w.technique);
+    EXPECT_EQ(m.encoding, "radial-distance");
+    EXPECT_EQ(m.width, w.w);
+    EXPECT_EQ(m.height, w.h);
+    ASSERT_EQ(m.passes.size(), w.passes);
+    for (const auto& p : m.passes) {
+      EXPECT_GT(p.viewport.width, 0);
+      EXPECT_LE(p.viewport.x + p.viewport.width, m.width);
+      EXPECT_LE(p.viewport.y + p.viewport.height, m.height);
+    }
+  }
+}
+
+// Options of the omni techniques that the frame renderer refuses, naming the option.
+TEST(OmniFrame, RejectsBadOptions) {
+  const scenes::Scene scene = scenes::builtin_scene("paraboloid");
+  raster::Renderer r(0);
+  frame::FrameOptions o;
+  o.width = 64;
+  o.height = 36;
+  o.shadow_size = 32;
+  auto message = [&](frame::FrameOptions opt) -> std::string {
+    try {
+      frame::render_frame(scene, opt, r);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  frame::FrameOptions a = o;
+  a.technique = "paraboloid";
+  a.paraboloid_pack = "rgb565";
+  EXPECT_NE(message(a).find("--paraboloid-pack"), std::string::npos);
+  a.paraboloid_pack.reset();
+  a.split_plane = "0,0,0";
+  EXPECT_NE(message(a).find("--split-plane"), std::string::npos);
+  a.split_plane = "w";
+  EXPECT_NE(message(a).find("--split-plane"), std::string::npos);
+  a.split_plane = "1,0.5,0";
+  EXPECT_EQ(message(a), "");
+  frame::FrameOptions b = o;
+  b.technique = "pyramid";
+  b.shadow_size = 33;
+  EXPECT_NE(message(b).find("--shadow-size"), std::string::npos);
+  b.shadow_size = 32;
+  b.bias = "offset";
+  EXPECT_NE(message(b).find("--bias"), std::string::npos);
+}
+
+}  // namespace
