@@ -119,4 +119,8 @@ ShadowSettings default_shadow_settings(LightType light) {
   return s;
 }
 
+uint32_t default_map_size(ShadowTechnique technique) {
+  return technique == ShadowTechnique::projective ? 128u : 1024u;
+}
+
 }  // namespace scenes

@@ -97,4 +97,8 @@ bool technique_supports(ShadowTechnique technique, LightType light);
 // hemispherical; PCF, slope-scaled bias, 1024², d16.
 ShadowSettings default_shadow_settings(LightType light);
 
+// The map side a technique uses when a scene does not give one: 128 texels per caster for `projective` (the
+// article's small per-caster maps), 1024 for every other technique.
+uint32_t default_map_size(ShadowTechnique technique);
+
 }  // namespace scenes

@@ -170,6 +170,22 @@ TEST(SceneJson, ShorthandsReadAsDocumented) {
   EXPECT_EQ(s.cameras.size(), 1u) << "a framing camera is added";
 }
 
+// A light that names a technique but no map size gets that technique's size: small maps per caster for
+// projective, 1024² otherwise; a given size is kept.
+TEST(SceneJson, MapSizeDefaultsFollowTheTechnique) {
+  const scenes::SceneDesc d = scenes::parse_scene_json(R"({
+    "objects": [{"primitive": {"type": "box"}}],
+    "lights": [{"type": "directional", "shadow": {"technique": "projective"}},
+               {"type": "directional", "shadow": {"technique": "projective", "map_size": 64}},
+               {"type": "directional", "shadow": {"technique": "shadowmap"}},
+               {"type": "point"}]
+  })", "sizes.json");
+  EXPECT_EQ(d.lights[0].shadow.map_size, 128u);
+  EXPECT_EQ(d.lights[1].shadow.map_size, 64u);
+  EXPECT_EQ(d.lights[2].shadow.map_size, 1024u);
+  EXPECT_EQ(d.lights[3].shadow.map_size, 1024u);
+}
+
 TEST(SceneJson, ExamplesLoad) {
   const std::filesystem::path examples = std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "docs/examples";
   size_t loaded = 0;
