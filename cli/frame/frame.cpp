@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include <glm/matrix.hpp>
@@ -40,7 +41,7 @@ std::vector<CameraVertex> camera_vertices(const scenes::Mesh& m) {
   return v;
 }
 
-scenes::io::ExrMap exr_of(const tech::ShadowMapSet& set, const tech::ClassicSettings& s) {
+scenes::io::ExrMap exr_of(const tech::ShadowMapSet& set) {
   const tech::ShadowPass& p = set.passes[0];
   scenes::io::ExrMap m = scenes::io::exr_map_from(*set.targets[p.target]);
   m.world_to_camera = p.view;
@@ -48,7 +49,6 @@ scenes::io::ExrMap exr_of(const tech::ShadowMapSet& set, const tech::ClassicSett
   m.technique = "shadowmap";
   m.encoding = "window-depth";
   if (const auto d = tech::find_technique_defaults("shadowmap")) m.encoding = std::string(d->encoding);
-  (void)s;
   return m;
 }
 
@@ -74,39 +74,43 @@ Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, rast
   // ---- Shadow maps, light by light.
   const auto t_shadow = Clock::now();
   std::vector<std::unique_ptr<LightMaps>> lights;
-  scenes::TriangleSoup casters;
-  tech::ClassicFit fit;
-  bool have_casters = false;
+  std::optional<scenes::TriangleSoup> casters;  // flattened once, when a light first needs them
+  auto caster_soup = [&]() -> const scenes::TriangleSoup& {
+    if (!casters) casters = scenes::flatten(scene, scenes::InstanceFilter::casters);
+    return *casters;
+  };
+  std::optional<tech::ClassicFit> fit;  // what directional boxes are fitted to, computed once
+  auto add_map = [&](scenes::io::ExrMap map, size_t light) {
+    ++frame.stats.maps_rendered;
+    frame.maps.push_back(std::move(map));
+    frame.map_names.push_back("light" + std::to_string(light) + "-" + scene.lights[light].name);
+  };
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     auto lm = std::make_unique<LightMaps>();
     lm->resolved = resolve_light(scene.lights[i], options);
     const ResolvedLight& r = lm->resolved;
     if (const auto plan = resolve_omni(scene.lights[i], r, options, i)) {
-      if (casters.positions.empty()) casters = scenes::flatten(scene, scenes::InstanceFilter::casters);
+      const scenes::TriangleSoup& soup = caster_soup();
       lm->omni = plan_omni(*plan);
-      frame.stats.draws += build_omni(renderer, *lm->omni, casters.positions, casters.indices);
-      ++frame.stats.maps_rendered;
-      frame.maps.push_back(omni_exr(*lm->omni));
-      frame.map_names.push_back("light" + std::to_string(i) + "-" + scene.lights[i].name);
+      frame.stats.draws += build_omni(renderer, *lm->omni, soup.positions, soup.indices);
+      add_map(omni_exr(*lm->omni), i);
     } else if (r.technique != "none" && r.technique != "projective" && !r.shadowed)
       frame.notes.push_back("light " + std::to_string(i) + " (" + scene.lights[i].name + "): technique " +
                             r.technique + " is not built yet; drawn unshadowed");
     if (r.shadowed) {
-      if (!have_casters) {
-        casters = scenes::flatten(scene, scenes::InstanceFilter::casters);
-        fit.casters = to_box(scenes::scene_bounds(scene, scenes::InstanceFilter::casters));
-        fit.receivers = tech::camera_receiver_box(
+      const scenes::TriangleSoup& soup = caster_soup();
+      if (!fit) {
+        fit.emplace();
+        fit->casters = to_box(scenes::scene_bounds(scene, scenes::InstanceFilter::casters));
+        fit->receivers = tech::camera_receiver_box(
             view_proj, to_box(scenes::scene_bounds(scene, scenes::InstanceFilter::receivers)));
-        have_casters = true;
       }
-      tech::ClassicFit f = fit;
+      tech::ClassicFit f = *fit;
       if (r.fixed_box) f.fixed = tech::fixed_directional(r.classic.direction, glm::vec3(0.0f), {10.0f, 10.0f}, -10.0f, 20.0f);
       lm->set = tech::plan_classic_map(r.classic, r.settings, f);
-      frame.stats.draws += tech::build_maps(renderer, lm->set, casters.positions, casters.indices,
+      frame.stats.draws += tech::build_maps(renderer, lm->set, soup.positions, soup.indices,
                                             tech::classic_depth_options(r.settings));
-      ++frame.stats.maps_rendered;
-      frame.maps.push_back(exr_of(lm->set, r.settings));
-      frame.map_names.push_back("light" + std::to_string(i) + "-" + scene.lights[i].name);
+      add_map(exr_of(lm->set), i);
     }
     lights.push_back(std::move(lm));
   }

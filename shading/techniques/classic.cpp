@@ -29,10 +29,6 @@ ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& l
   const ShadowPass& p = set.passes.at(0);
   const raster::DepthTarget& target = *set.targets.at(p.target);
   const Texture2D tex = Texture2D::view(target, p.viewport);
-  // Outside a directional map nothing was rendered: border depth 1 reads as lit.
-  Sampler linear = Sampler::pcf(CompareFunc::lequal, Wrap::clamp_to_border, 1.0f);
-  Sampler nearest = linear;
-  nearest.mag_filter = nearest.min_filter = Filter::nearest;
   ClassicReader r;
   r.shadow = shadow_matrix(p);
   r.perspective = p.perspective;
@@ -42,7 +38,7 @@ ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& l
   r.bias = s.bias;
   r.filter_kind = s.filter;
   r.filter = s.filter_params;
-  r.maps = MapLookups{ShadowLookup2D(tex, nearest), ShadowLookup2D(tex, linear)};
+  r.maps = map_lookups(tex, Wrap::clamp_to_border);  // outside a directional map: border depth 1, lit
   return r;
 }
 

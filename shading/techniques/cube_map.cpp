@@ -45,16 +45,7 @@ TextureCube cube_texture(const ShadowMapSet& set) {
 }
 
 OmniReader make_cube_reader(const ShadowMapSet& set, const OmniLight& light, const OmniSettings& s) {
-  OmniReader r;
-  r.kind = OmniKind::cube;
-  r.frame = light_frame(light.position, light.direction);
-  r.position = light.position;
-  r.direction = light.direction;
-  r.range = light.range;
-  r.hemispherical = light.hemispherical;
-  r.bias = s.bias;
-  r.filter_kind = s.filter;
-  r.filter = s.filter_params;
+  OmniReader r = omni_reader_base(OmniKind::cube, light_frame(light.position, light.direction), light, s);
   r.cube = cube_texture(set);
   r.cube_linear = Sampler::pcf(CompareFunc::lequal, Wrap::clamp_to_edge, 1.0f);
   r.cube_linear.seamless_cube = s.seamless;

@@ -24,4 +24,18 @@ glm::mat4 LightFrame::matrix() const {
   return m;
 }
 
+OmniReader omni_reader_base(OmniKind kind, const LightFrame& frame, const OmniLight& light, const OmniSettings& s) {
+  OmniReader r;
+  r.kind = kind;
+  r.frame = frame;
+  r.position = light.position;
+  r.direction = light.direction;
+  r.range = light.range;
+  r.hemispherical = light.hemispherical;
+  r.bias = s.bias;
+  r.filter_kind = s.filter;
+  r.filter = s.filter_params;
+  return r;
+}
+
 }  // namespace shading::tech

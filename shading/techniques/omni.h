@@ -83,6 +83,10 @@ struct OmniReader {
   bool has_back = false;
 };
 
+// A reader with the fields every omni technique fills the same way (light, bias, filter); each technique then
+// adds its maps.
+OmniReader omni_reader_base(OmniKind kind, const LightFrame& frame, const OmniLight& light, const OmniSettings& s);
+
 // The compare reference and the point it is taken at, with the reader's bias applied: the receiver moved along
 // its normal (`normal`), or the reference lowered by depth_bias (constant, slope) with N·L towards the light.
 struct OmniRef {

@@ -60,23 +60,11 @@ Texture2D paraboloid_depth_texture(const ShadowMapSet& set, size_t pass, const O
 }
 
 OmniReader make_paraboloid_reader(const ShadowMapSet& set, const OmniLight& light, const OmniSettings& s) {
-  OmniReader r;
-  r.kind = OmniKind::paraboloid;
-  r.frame = paraboloid_frame(light, s);
-  r.position = light.position;
-  r.direction = light.direction;
-  r.range = light.range;
-  r.hemispherical = light.hemispherical;
-  r.bias = s.bias;
-  r.filter_kind = s.filter;
-  r.filter = s.filter_params;
-  Sampler linear = Sampler::pcf(CompareFunc::lequal, Wrap::clamp_to_edge, 1.0f);
-  Sampler nearest = linear;
-  nearest.mag_filter = nearest.min_filter = Filter::nearest;
+  OmniReader r = omni_reader_base(OmniKind::paraboloid, paraboloid_frame(light, s), light, s);
   r.has_back = set.passes.size() > 1;
   for (size_t k = 0; k < set.passes.size() && k < 2; ++k) {
     const Texture2D tex = paraboloid_depth_texture(set, k, s);
-    r.maps[k] = MapLookups{ShadowLookup2D(tex, nearest), ShadowLookup2D(tex, linear)};
+    r.maps[k] = map_lookups(tex, Wrap::clamp_to_edge);
   }
   return r;
 }

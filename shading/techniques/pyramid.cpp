@@ -56,21 +56,9 @@ raster::DrawStats build_pyramid_map(raster::Renderer& renderer, ShadowMapSet& se
 }
 
 OmniReader make_pyramid_reader(const ShadowMapSet& set, const OmniLight& light, const OmniSettings& s) {
-  OmniReader r;
-  r.kind = OmniKind::pyramid;
-  r.frame = light_frame(light.position, light.direction);
-  r.position = light.position;
-  r.direction = light.direction;
-  r.range = light.range;
-  r.hemispherical = true;
-  r.bias = s.bias;
-  r.filter_kind = s.filter;
-  r.filter = s.filter_params;
-  const Texture2D tex = Texture2D::view(*set.targets.at(0));
-  Sampler linear = Sampler::pcf(CompareFunc::lequal, Wrap::clamp, 1.0f);
-  Sampler nearest = linear;
-  nearest.mag_filter = nearest.min_filter = Filter::nearest;
-  r.maps[0] = MapLookups{ShadowLookup2D(tex, nearest), ShadowLookup2D(tex, linear)};
+  OmniReader r = omni_reader_base(OmniKind::pyramid, light_frame(light.position, light.direction), light, s);
+  r.hemispherical = true;  // a 180° map: everything behind the light is unlit, whatever the light type
+  r.maps[0] = map_lookups(Texture2D::view(*set.targets.at(0)), Wrap::clamp);  // legacy GL_CLAMP
   return r;
 }
 

@@ -35,6 +35,15 @@ struct MapLookups {
   ShadowLookup2D nearest, linear;
 };
 
+// The pair over one map with LEQUAL compare, the given wrap and border depth 1 (outside reads as lit where the
+// wrap uses the border).
+inline MapLookups map_lookups(const Texture2D& tex, Wrap wrap) {
+  const Sampler linear = Sampler::pcf(CompareFunc::lequal, wrap, 1.0f);
+  Sampler nearest = linear;
+  nearest.mag_filter = nearest.min_filter = Filter::nearest;
+  return MapLookups{ShadowLookup2D(tex, nearest), ShadowLookup2D(tex, linear)};
+}
+
 // One tap at st + offset: a single compare, or (kPcf) a bilinear PCF of four compares.
 template <bool kPcf>
 struct Taps {

@@ -1,18 +1,15 @@
 // End-to-end tests of the shadowlab executable: each runs the built binary (SHADOWLAB_CLI) on small files in
 // a temporary folder of the build tree and checks exit codes, the one-line error shape, that failed runs leave
 // no output, and that the files written hold what the scene and matrices say.
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "scenes/io/exr_map.h"
+#include "tests/cli/cli_run.h"
 #include "tests/scenes/gltf_fixture.h"
 #include "tests/support.h"
 
@@ -20,28 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Runs `shadowlab ARGS` in `dir` (a shell command line; arguments are quoted by the caller where needed).
-Outcome shadowlab(const fs::path& dir, const std::string& args) {
-  const std::string cmd = "cd '" + dir.string() + "' && '" SHADOWLAB_CLI "' " + args + " >stdout.txt 2>stderr.txt";
-  const int status = std::system(cmd.c_str());
-  Outcome r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(dir / "stdout.txt");
-  r.err = slurp(dir / "stderr.txt");
-  return r;
-}
+using testsupport::Outcome;
+using testsupport::shadowlab;
+using testsupport::slurp;
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
@@ -62,13 +40,7 @@ class Cli : public ::testing::Test {
   }
   // A bad-input run: exit code 2, exactly one line `shadowlab: error: WHERE: what`, and no file named `out`.
   void expect_bad(const std::string& args, const std::string& where, const std::string& out = "") {
-    const Outcome r = shadowlab(dir, args);
-    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
-    EXPECT_THAT(r.err, ::testing::MatchesRegex("shadowlab: error: [^\n]+: [^\n]+\n")) << args;
-    EXPECT_EQ(r.err.rfind("shadowlab: error: " + where + ": ", 0), 0u) << args << "\n" << r.err;
-    if (!out.empty()) {
-      EXPECT_FALSE(fs::exists(dir / out)) << args;
-    }
+    testsupport::expect_bad_run(dir, args, where, out);
     for (const auto& e : fs::directory_iterator(dir))  // no temporary left behind either
       EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
   }

@@ -1,9 +1,6 @@
 // End-to-end tests of `shadowlab render` with per-caster projective shadows: the per-frame cache line of
 // --stats (still frames reuse every map, --animate rebuilds the moving ones), the maps as EXR, and bad values
 // of the projective options as one error line naming the option, exit code 2 and no output file.
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -14,29 +11,15 @@
 #include <gtest/gtest.h>
 
 #include "scenes/io/exr_map.h"
+#include "tests/cli/cli_run.h"
 #include "tests/support.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Outcome shadowlab(const fs::path& dir, const std::string& args) {
-  const std::string cmd = "cd '" + dir.string() + "' && '" SHADOWLAB_CLI "' " + args + " >stdout.txt 2>stderr.txt";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout.txt"), slurp(dir / "stderr.txt")};
-}
+using testsupport::Outcome;
+using testsupport::shadowlab;
 
 // The `frame K: maps rebuilt R, reused U` lines of stdout, in order.
 std::vector<std::string> cache_lines(const std::string& out) {
@@ -55,11 +38,7 @@ class ProjectiveCli : public ::testing::Test {
                                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
   void expect_bad(const std::string& args, const std::string& where) {
-    const Outcome r = shadowlab(dir, args + " --out bad.png");
-    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
-    EXPECT_THAT(r.err, ::testing::MatchesRegex("shadowlab: error: [^\n]+: [^\n]+\n")) << args;
-    EXPECT_EQ(r.err.rfind("shadowlab: error: " + where + ": ", 0), 0u) << args << "\n" << r.err;
-    EXPECT_FALSE(fs::exists(dir / "bad.png")) << args;
+    testsupport::expect_bad_run(dir, args + " --out bad.png", where, "bad.png");
   }
   fs::path dir;
 };

@@ -15,36 +15,16 @@
 #include "scenes/builtin_scenes.h"
 #include "scenes/scene_build.h"
 #include "scenes/scene_json.h"
+#include "tests/cli/frame/golden.h"
 #include "tests/support.h"
 
 namespace {
-
-uint64_t fnv1a(const raster::ColorTarget& c) {
-  uint64_t h = 1469598103934665603ull;
-  for (int y = 0; y < c.height(); ++y) {
-    const uint8_t* row = c.row8(y);
-    for (int x = 0; x < c.width() * 4; ++x) h = (h ^ row[x]) * 1099511628211ull;
-  }
-  return h;
-}
 
 int max_difference(const raster::ColorTarget& a, const raster::ColorTarget& b) {
   int d = 0;
   for (int y = 0; y < a.height(); ++y)
     for (int x = 0; x < a.width() * 4; ++x) d = std::max(d, std::abs(int(a.row8(y)[x]) - int(b.row8(y)[x])));
   return d;
-}
-
-// Debug aid: SHADOWLAB_GOLDEN_DUMP=dir writes a frame as a binary PPM (top row first).
-void dump(const raster::ColorTarget& c, const std::string& name) {
-  const char* dir = std::getenv("SHADOWLAB_GOLDEN_DUMP");
-  if (!dir) return;
-  std::FILE* f = std::fopen((std::string(dir) + "/" + name + ".ppm").c_str(), "wb");
-  if (!f) return;
-  std::fprintf(f, "P6\n%d %d\n255\n", c.width(), c.height());
-  for (int y = c.height() - 1; y >= 0; --y)
-    for (int x = 0; x < c.width(); ++x) std::fwrite(c.row8(y) + 4 * x, 1, 3, f);
-  std::fclose(f);
 }
 
 scenes::Scene scene_from(const std::string& json) {
@@ -120,7 +100,7 @@ TEST(ProjectiveFrame, CacheRebuildsOnlyWhatMoved) {
   const frame::Frame f2 = frame::render_frame(scene, o, r, &cache);
   EXPECT_EQ(f2.stats.projective.maps_rebuilt, 0u);
   EXPECT_EQ(f2.stats.projective.maps_reused, 5u);
-  EXPECT_EQ(fnv1a(f1.color), fnv1a(f2.color));
+  EXPECT_EQ(testsupport::frame_hash(f1.color), testsupport::frame_hash(f2.color));
   // Move one figure (every instance of top-level object 3): exactly its map is rebuilt.
   for (scenes::Instance& inst : scene.instances)
     if (inst.object == 3) inst.transform[3].x += 0.2f;
@@ -177,18 +157,15 @@ TEST(ProjectiveFrame, GoldenBuiltinSceneAcrossThreadCounts) {
       frame::FrameOptions o = small(320, 180);
       o.projective_mode = mode;
       const frame::Frame f = frame::render_frame(scene, o, r);
-      const uint64_t h = fnv1a(f.color);
+      const uint64_t h = testsupport::frame_hash(f.color);
       if (threads == 0 && std::string(mode) == "multipass") {
         first = h;
-        dump(f.color, "projective");
+        testsupport::dump_golden(f.color, "projective");
       }
       EXPECT_EQ(h, first) << "threads " << threads << " " << mode;
     }
   }
-  if (first != kGolden) {
-    std::printf("golden projective: new hash 0x%016llxull\n", static_cast<unsigned long long>(first));
-    ADD_FAILURE() << "projective: hash 0x" << std::hex << first << " expected 0x" << kGolden;
-  }
+  testsupport::expect_golden_hash("projective", first, kGolden);
 }
 
 TEST(ProjectiveFrame, MapsAsExrRecords) {

@@ -11,26 +11,9 @@
 
 #include "cli/frame/frame.h"
 #include "scenes/builtin_scenes.h"
+#include "tests/cli/frame/golden.h"
 
 namespace {
-
-uint64_t fnv1a(const raster::ColorTarget& c) {
-  uint64_t h = 1469598103934665603ull;
-  for (int y = 0; y < c.height(); ++y) {
-    const uint8_t* row = c.row8(y);
-    for (int x = 0; x < c.width() * 4; ++x) h = (h ^ row[x]) * 1099511628211ull;
-  }
-  return h;
-}
-
-void write_ppm(const raster::ColorTarget& c, const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) return;
-  std::fprintf(f, "P6\n%d %d\n255\n", c.width(), c.height());
-  for (int y = c.height() - 1; y >= 0; --y)
-    for (int x = 0; x < c.width(); ++x) std::fwrite(c.row8(y) + 4 * x, 1, 3, f);
-  std::fclose(f);
-}
 
 struct Case {
   const char* name;
@@ -65,22 +48,10 @@ TEST_P(OmniGolden, HashIsStableAcrossThreadCounts) {
   o.filter = c.filter;
   o.shadow_size = 512;
   if (c.pack) o.paraboloid_pack = c.pack;
-  uint64_t first = 0;
-  for (int threads : {0, 1, 2}) {
-    raster::Renderer r(threads);
-    const frame::Frame f = frame::render_frame(scene, o, r);
+  testsupport::expect_golden_frame(c.name, c.expected, scene, o, [](const frame::Frame& f) {
     ASSERT_EQ(f.maps.size(), 1u);
     EXPECT_TRUE(f.notes.empty());
-    const uint64_t h = fnv1a(f.color);
-    if (threads == 0) first = h;
-    if (const char* dir = std::getenv("SHADOWLAB_GOLDEN_DUMP"); dir && threads == 0)
-      write_ppm(f.color, std::string(dir) + "/" + c.name + ".ppm");
-    EXPECT_EQ(h, first) << c.name << ": threads " << threads << " differ from threads 0";
-  }
-  if (first != c.expected) {
-    std::printf("golden %s: new hash 0x%016llxull\n", c.name, static_cast<unsigned long long>(first));
-    ADD_FAILURE() << c.name << ": hash 0x" << std::hex << first << " expected 0x" << c.expected;
-  }
+  });
 }
 
 INSTANTIATE_TEST_SUITE_P(Omni, OmniGolden, testing::ValuesIn(kCases),
