@@ -15,44 +15,6 @@ namespace raster {
 // Lanes [lo, hi] of an 8-lane row.
 inline unsigned lane_range_mask(int lo, int hi) { return ((2u << hi) - 1u) & ~((1u << lo) - 1u); }
 
-// Bit (8·r + l) of the result is set when pixel (bx + l, by + r) is covered, for rows r in [row_lo, row_hi]
-// and lanes in `lanes`; (bx, by) is the block's lower-left pixel.
-[[gnu::always_inline]] inline uint64_t block_coverage(const TriangleSetup& t, int32_t bx, int32_t by, unsigned lanes, int row_lo,
-                               int row_hi) {
-  constexpr int64_t kSpan = kBlockSize - 1;
-  int64_t f0[3];
-  bool crosses[3];
-  for (int k = 0; k < 3; ++k) {
-    const int64_t a = t.a[k], b = t.b[k];
-    f0[k] = a * bx + b * by - t.t[k];
-    const int64_t lo = f0[k] + std::min<int64_t>(a, 0) * kSpan + std::min<int64_t>(b, 0) * kSpan;
-    const int64_t hi = f0[k] + std::max<int64_t>(a, 0) * kSpan + std::max<int64_t>(b, 0) * kSpan;
-    if (hi < 0) return 0;  // the whole block is outside this edge
-    crosses[k] = lo < 0;
-  }
-  uint64_t row_bits = 0;
-  for (int r = row_lo; r <= row_hi; ++r) row_bits |= uint64_t(lanes) << (8 * r);
-  if (!crosses[0] && !crosses[1] && !crosses[2]) return row_bits;  // trivially accepted
-
-  // Per pixel: F = f0 + a·l + b·r; inside iff F >= 0 for every crossing edge, i.e. the OR of the F has no sign bit.
-  using simd::VecI32;
-  const VecI32 lane = VecI32::iota();
-  VecI32 f[3], step[3];
-  for (int k = 0; k < 3; ++k) {
-    const int32_t start = crosses[k] ? int32_t(f0[k] + int64_t(t.b[k]) * row_lo) : 0;
-    f[k] = VecI32::splat(start) + VecI32::splat(crosses[k] ? t.a[k] : 0) * lane;
-    step[k] = VecI32::splat(crosses[k] ? t.b[k] : 0);
-  }
-  uint64_t mask = 0;
-  for (int r = row_lo; r <= row_hi; ++r) {
-    mask |= uint64_t(simd::non_negative(f[0] | f[1] | f[2]).bits() & lanes) << (8 * r);
-    f[0] = f[0] + step[0];
-    f[1] = f[1] + step[1];
-    f[2] = f[2] + step[2];
-  }
-  return mask;
-}
-
 // Per-row edge values of the (up to three) edges that cross a region, stepped one row at a time.
 struct EdgeRows {
   simd::VecI32 f[3], step[3];
@@ -132,6 +94,56 @@ inline void rasterize_blocks(const TriangleSetup& t, int32_t x0, int32_t y0, int
   }
 }
 
+// Bits [8·row_lo, 8·row_hi + 7] of a block mask, each row holding `lanes`.
+inline uint64_t block_rows_mask(unsigned lanes, int row_lo, int row_hi) {
+  const uint64_t rows = (~uint64_t(0) >> (8 * (kBlockSize - 1 - row_hi))) & (~uint64_t(0) << (8 * row_lo));
+  return (uint64_t(lanes) * 0x0101010101010101ull) & rows;
+}
+
+// The block walk of a block stage (shaded draws) over [x0, x1] × [y0, y1]: the same stepped int64 edge values
+// as rasterize_blocks, one 64-bit coverage mask per block (bit 8·r + l for pixel (bx + l, by + r)); blocks
+// inside every edge get their mask without per-pixel edge tests.
+template <class Stage>
+inline void rasterize_block_masks(const TriangleSetup& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                                  const Stage& stage) {
+  constexpr int64_t kSpan = kBlockSize - 1;
+  const int32_t bx0 = x0 & ~(kBlockSize - 1), by0 = y0 & ~(kBlockSize - 1);
+  int64_t g_row[3], range[3], to_start[3], step_x[3], step_y[3];
+  for (int k = 0; k < 3; ++k) {
+    const int64_t a = t.a[k], b = t.b[k];
+    const int64_t hi = (std::max<int64_t>(a, 0) + std::max<int64_t>(b, 0)) * kSpan;
+    g_row[k] = a * bx0 + b * by0 - t.t[k] + hi;
+    range[k] = (std::abs(a) + std::abs(b)) * kSpan;
+    to_start[k] = -hi;
+    step_x[k] = a * kBlockSize;
+    step_y[k] = b * kBlockSize;
+  }
+  for (int32_t by = by0; by <= y1; by += kBlockSize) {
+    const int row_lo = std::max(y0 - by, 0), row_hi = std::min(y1 - by, kBlockSize - 1);
+    int64_t g0 = g_row[0], g1 = g_row[1], g2 = g_row[2];
+    for (int32_t bx = bx0; bx <= x1; bx += kBlockSize, g0 += step_x[0], g1 += step_x[1], g2 += step_x[2]) {
+      if ((g0 | g1 | g2) < 0) continue;  // outside an edge
+      const unsigned lanes = lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1));
+      const bool crosses[3] = {g0 < range[0], g1 < range[1], g2 < range[2]};
+      if (!crosses[0] && !crosses[1] && !crosses[2]) {  // trivially accepted
+        stage.block(t, bx, by, block_rows_mask(lanes, row_lo, row_hi));
+        continue;
+      }
+      const int64_t f_start[3] = {g0 + to_start[0] + t.b[0] * int64_t(row_lo),
+                                  g1 + to_start[1] + t.b[1] * int64_t(row_lo),
+                                  g2 + to_start[2] + t.b[2] * int64_t(row_lo)};
+      EdgeRows edges(t, f_start, crosses);
+      uint64_t mask = 0;
+      for (int r = row_lo; r <= row_hi; ++r) {
+        mask |= uint64_t(edges.inside().bits() & lanes) << (8 * r);
+        edges.next_row();
+      }
+      if (mask) stage.block(t, bx, by, mask);
+    }
+    for (int k = 0; k < 3; ++k) g_row[k] += step_y[k];
+  }
+}
+
 // Rasterizes one triangle within `r` (a rectangle inside one tile) and hands covered pixels to the stage.
 // A row stage (depth-only) has columns(t, x), cursor(x, y) / next_row(cursor), row(columns, cursor, Mask,
 // BlockMax&), and hiz_plane /
@@ -166,14 +178,7 @@ inline void rasterize(const TriangleSetup& t, const PixelRect& r, const Stage& s
     }
     rasterize_blocks(t, x0, y0, x1, y1, stage);
   } else {
-    for (int32_t by = y0 & ~(kBlockSize - 1); by <= y1; by += kBlockSize) {
-      const int row_lo = std::max(y0 - by, 0), row_hi = std::min(y1 - by, kBlockSize - 1);
-      for (int32_t bx = x0 & ~(kBlockSize - 1); bx <= x1; bx += kBlockSize) {
-        const unsigned lane_bits = lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1));
-        const uint64_t mask = block_coverage(t, bx, by, lane_bits, row_lo, row_hi);
-        if (mask) stage.block(t, bx, by, mask);
-      }
-    }
+    rasterize_block_masks(t, x0, y0, x1, y1, stage);
   }
 }
 

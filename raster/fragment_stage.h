@@ -142,13 +142,22 @@ struct ShadedStage {
   struct PairRow {
     simd::VecF32 y;
     typename PairInterp<V>::Rows interp;
+    typename Traits::Storage *d0, *d1;  // the depth rows y, y + 1 (null without a depth target)
+    uint32_t *c0, *c1;                  // the RGBA8 colour rows, when the colour write takes the fast path
   };
+
+  // The colour write packs eight RGBA8 pixels at once: linear RGBA8, no blending.
+  bool packed_color() const {
+    return color && color_write && color->format() == ColorFormat::rgba8 && !color->srgb() &&
+           blend == BlendMode::replace;
+  }
 
   void pair_block(const TriangleSetup& t, int32_t bx, int32_t by, uint64_t mask) const {
     using simd::VecF32;
     alignas(32) static constexpr float kLaneX[8] = {0, 1, 2, 3, 0, 1, 2, 3}, kLaneY[8] = {0, 0, 0, 0, 1, 1, 1, 1};
     const PairInterp<V> interp(interps[t.prim & ~kBackFacingBit]);
     const VecF32 half = VecF32::splat(0.5f), dzdy = VecF32::splat(t.dzdy), z_offset = VecF32::splat(t.z_offset);
+    const bool packed = packed_color();
     PairColumn cols[2];
     for (int h = 0; h < 2; ++h) {
       cols[h].x = VecF32::splat(float(bx + 4 * h)) + VecF32::load(kLaneX);  // exact: indices below 2^24
@@ -158,33 +167,34 @@ struct ShadedStage {
     for (int p = 0; p < 4; ++p) {
       const unsigned rows = unsigned(mask >> (16 * p)) & 0xFFFFu;
       if (!rows) continue;
+      const int32_t y = by + 2 * p;
       PairRow row;
-      row.y = VecF32::splat(float(by + 2 * p)) + VecF32::load(kLaneY);
+      row.y = VecF32::splat(float(y)) + VecF32::load(kLaneY);
       row.interp = interp.rows(row.y + half);
+      row.d0 = depth ? depth->row<typename Traits::Storage>(y) + bx : nullptr;
+      row.d1 = depth ? depth->row<typename Traits::Storage>(y + 1) + bx : nullptr;
+      row.c0 = packed ? reinterpret_cast<uint32_t*>(color->row8(y)) + bx : nullptr;
+      row.c1 = packed ? reinterpret_cast<uint32_t*>(color->row8(y + 1)) + bx : nullptr;
       for (int h = 0; h < 2; ++h) {
         const unsigned live = ((rows >> (4 * h)) & 0xFu) | (((rows >> (8 + 4 * h)) & 0xFu) << 4);
         if (!live) continue;
         // plane_depth's operations: fma(dzdy, y, fma(dzdx, x, z_a0)) + z_offset, clamped.
         const VecF32 z = clamp01(simd::fma(dzdy, row.y, cols[h].zcol) + z_offset);
-        pair(t, interp, cols[h], row, z, bx + 4 * h, by + 2 * p, live);
+        pair(t, interp, cols[h], row, z, 4 * h, bx + 4 * h, y, live);
       }
     }
   }
 
   // Lanes as QuadPairIn says: lane i at (x + (i & 3), y + (i >> 2)); the same steps as quad(), eight at a time.
+  // `dx` is x's offset from the block's left edge (the row pointers' origin).
   [[gnu::always_inline]] void pair(const TriangleSetup& t, const PairInterp<V>& interp, const PairColumn& col,
-                                   const PairRow& row, simd::VecF32 z, int32_t x, int32_t y, unsigned live) const {
+                                   const PairRow& row, simd::VecF32 z, int dx, int32_t x, int32_t y,
+                                   unsigned live) const {
     using simd::VecF32;
-    using Storage = typename Traits::Storage;
-    Storage* d0 = nullptr;
-    Storage* d1 = nullptr;
     typename Traits::Value stored{};
-    if (depth) {
-      d0 = depth->row<Storage>(y) + x, d1 = depth->row<Storage>(y + 1) + x;
-      stored = simd::load_rows4(d0, d1);
-    }
+    if (row.d0) stored = simd::load_rows4(row.d0 + dx, row.d1 + dx);
     if constexpr (kEarlyZ) {
-      if (depth) live &= depth_compare<Func>(Traits::from_depth(z), stored).bits();
+      if (row.d0) live &= depth_compare<Func>(Traits::from_depth(z), stored).bits();
       if (!live) return;
     }
     QuadPairIn<V> in;
@@ -198,29 +208,30 @@ struct ShadedStage {
     if constexpr (shader_writes_depth<Shader>()) z = clamp01(out.depth);
     const auto frag = Traits::from_depth(z);
     if constexpr (!kEarlyZ) {
-      if (depth) live &= depth_compare<Func>(frag, stored).bits();
+      if (row.d0) live &= depth_compare<Func>(frag, stored).bits();
     }
     if (!live) return;
-    if (depth && depth_write && Func != DepthFunc::never)
-      simd::store_rows4(simd::select(simd::Mask::from_bits(live), stored, frag), d0, d1);
-    if (color && color_write) write_pair_color(x, y, out, live);
+    if (row.d0 && depth_write && Func != DepthFunc::never)
+      simd::store_rows4(simd::select(simd::Mask::from_bits(live), stored, frag), row.d0 + dx, row.d1 + dx);
+    if (row.c0) write_packed_color(row.c0 + dx, row.c1 + dx, out, live);
+    else if (color && color_write) write_pair_color(x, y, out, live);
   }
 
-  void write_pair_color(int32_t x, int32_t y, const QuadPairOut& out, unsigned live) const {
+  // ColorTarget::write's conversion, eight pixels at once: clamp to [0, 1] (NaN to 0, what its cast gives on
+  // x86), round(c · 255), packed RGBA8.
+  static void write_packed_color(uint32_t* r0, uint32_t* r1, const QuadPairOut& out, unsigned live) {
     using simd::VecF32, simd::VecI32;
-    if (color->format() == ColorFormat::rgba8 && !color->srgb() && blend == BlendMode::replace) {
-      // ColorTarget::write's conversion: clamp to [0, 1] (NaN to 0, what its cast gives on x86), round(c · 255).
-      VecI32 ch[4];
-      for (int i = 0; i < 4; ++i)
-        ch[i] = simd::round_to_int(simd::min(simd::max(out.color[i], VecF32::splat(0.0f)), VecF32::splat(1.0f)) *
-                                   VecF32::splat(255.0f));
-      VecI32 packed = ch[0] | simd::shift_left<8>(ch[1]) | simd::shift_left<16>(ch[2]) | simd::shift_left<24>(ch[3]);
-      uint32_t* r0 = reinterpret_cast<uint32_t*>(color->row8(y)) + x;
-      uint32_t* r1 = reinterpret_cast<uint32_t*>(color->row8(y + 1)) + x;
-      if (live != 0xFFu) packed = simd::select(simd::Mask::from_bits(live), simd::load_rows4(r0, r1), packed);
-      simd::store_rows4(packed, r0, r1);
-      return;
-    }
+    VecI32 ch[4];
+    for (int i = 0; i < 4; ++i)
+      ch[i] = simd::round_to_int(simd::min(simd::max(out.color[i], VecF32::splat(0.0f)), VecF32::splat(1.0f)) *
+                                 VecF32::splat(255.0f));
+    VecI32 packed = ch[0] | simd::shift_left<8>(ch[1]) | simd::shift_left<16>(ch[2]) | simd::shift_left<24>(ch[3]);
+    if (live != 0xFFu) packed = simd::select(simd::Mask::from_bits(live), simd::load_rows4(r0, r1), packed);
+    simd::store_rows4(packed, r0, r1);
+  }
+
+  // Any other colour target or blend: pixel by pixel through write_color.
+  void write_pair_color(int32_t x, int32_t y, const QuadPairOut& out, unsigned live) const {
     alignas(32) float ch[4][8];
     for (int i = 0; i < 4; ++i) out.color[i].store(ch[i]);
     for (int l = 0; l < 8; ++l)

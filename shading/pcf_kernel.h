@@ -117,39 +117,53 @@ inline float pcf_lequal_sse(const TextureLevel& L, glm::vec3 str, float border_d
   return _mm_cvtss_f32(_mm_add_ss(x, _mm_mul_ss(b, _mm_sub_ss(x1v, x))));
 }
 
+// What the eight-lane kernel needs of a texture level, splatted once (per kernel, not per lookup): the sizes as
+// floats for coordinate scaling, the clamp limits, the row pitch in texels and the base pointer.
+struct Pcf8Level {
+  TextureLevel level;
+  __m256 fwidth, fheight;
+  __m256i wmax, hmax;  // width − 1, height − 1
+  __m256i w2, h2;      // width − 2, height − 2: the last column / row a texel pair can start at
+  __m256i vpitch;      // texels from one row to the next
+  const float* base;
+  int pitch;
+  bool tiny;  // one texel wide or high: no pair fits, so the kernel gathers
+  explicit Pcf8Level(const TextureLevel& L)
+      : level(L), fwidth(_mm256_set1_ps(L.fwidth)), fheight(_mm256_set1_ps(L.fheight)),
+        wmax(_mm256_set1_epi32(L.width - 1)), hmax(_mm256_set1_epi32(L.height - 1)),
+        w2(_mm256_set1_epi32(L.width - 2)), h2(_mm256_set1_epi32(L.height - 2)),
+        // Element offsets fit int32: rows are at most 16384 texels and a target's pitch at most 16384.
+        vpitch(_mm256_set1_epi32(int(L.row_bytes / 4))), base(reinterpret_cast<const float*>(L.data)),
+        pitch(int(L.row_bytes / 4)), tiny(L.width < 2 || L.height < 2) {}
+};
+
 // The four 32-bit texels of eight bilinear footprints, as raw bits in float lanes: tex[0..3] at (x0, y0),
 // (x1, y0), (x0, y1), (x1, y1) with x0 = clamp(i0, 0, W − 1), x1 = clamp(i0 + 1, 0, W − 1) and likewise y0, y1
 // from j0. Scalar loads, much cheaper than AVX2 gathers on the machines measured: where the texture is at least
 // 2 × 2, each lane reads two 8-byte pairs at column clamp(i0, 0, W − 2) of rows clamp(j0, 0, H − 2) and the
 // next, and lanes at an edge are fixed afterwards; a texture one texel wide or high gathers.
-inline void fetch_taps8(const TextureLevel& L, __m256i i0, __m256i j0, __m256 tex[4]) {
-  // Element offsets fit int32: rows are at most 16384 texels and a target's pitch at most 16384.
-  const int pitch = int(L.row_bytes / 4);
-  const __m256i vpitch = _mm256_set1_epi32(pitch);
+inline void fetch_taps8(const Pcf8Level& L, __m256i i0, __m256i j0, __m256 tex[4]) {
   const __m256i zero = _mm256_setzero_si256(), one = _mm256_set1_epi32(1);
-  const float* base = reinterpret_cast<const float*>(L.data);
-  if (L.width < 2 || L.height < 2) {
-    const __m256i wm = _mm256_set1_epi32(L.width - 1), hm = _mm256_set1_epi32(L.height - 1);
+  if (L.tiny) [[unlikely]] {
     auto clamp = [&](__m256i i, __m256i m) { return _mm256_min_epi32(_mm256_max_epi32(i, zero), m); };
-    const __m256i x0 = clamp(i0, wm), x1 = clamp(_mm256_add_epi32(i0, one), wm);
-    const __m256i o0 = _mm256_mullo_epi32(clamp(j0, hm), vpitch);
-    const __m256i o1 = _mm256_mullo_epi32(clamp(_mm256_add_epi32(j0, one), hm), vpitch);
-    tex[0] = _mm256_i32gather_ps(base, _mm256_add_epi32(o0, x0), 4);
-    tex[1] = _mm256_i32gather_ps(base, _mm256_add_epi32(o0, x1), 4);
-    tex[2] = _mm256_i32gather_ps(base, _mm256_add_epi32(o1, x0), 4);
-    tex[3] = _mm256_i32gather_ps(base, _mm256_add_epi32(o1, x1), 4);
+    const __m256i x0 = clamp(i0, L.wmax), x1 = clamp(_mm256_add_epi32(i0, one), L.wmax);
+    const __m256i o0 = _mm256_mullo_epi32(clamp(j0, L.hmax), L.vpitch);
+    const __m256i o1 = _mm256_mullo_epi32(clamp(_mm256_add_epi32(j0, one), L.hmax), L.vpitch);
+    tex[0] = _mm256_i32gather_ps(L.base, _mm256_add_epi32(o0, x0), 4);
+    tex[1] = _mm256_i32gather_ps(L.base, _mm256_add_epi32(o0, x1), 4);
+    tex[2] = _mm256_i32gather_ps(L.base, _mm256_add_epi32(o1, x0), 4);
+    tex[3] = _mm256_i32gather_ps(L.base, _mm256_add_epi32(o1, x1), 4);
     return;
   }
-  const __m256i w2 = _mm256_set1_epi32(L.width - 2), h2 = _mm256_set1_epi32(L.height - 2);
-  const __m256i xb = _mm256_min_epi32(_mm256_max_epi32(i0, zero), w2);
-  const __m256i yb = _mm256_min_epi32(_mm256_max_epi32(j0, zero), h2);
+  const __m256i xb = _mm256_min_epi32(_mm256_max_epi32(i0, zero), L.w2);
+  const __m256i yb = _mm256_min_epi32(_mm256_max_epi32(j0, zero), L.h2);
   alignas(32) int32_t off[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(off), _mm256_add_epi32(_mm256_mullo_epi32(yb, vpitch), xb));
+  _mm256_store_si256(reinterpret_cast<__m256i*>(off), _mm256_add_epi32(_mm256_mullo_epi32(yb, L.vpitch), xb));
   // Read the offsets back from memory (one load each) rather than letting the compiler extract them lane by lane
   // (two instructions each, on the shuffle port the fetch needs).
   __asm__("" : "+m"(off));
   for (int r = 0; r < 2; ++r) {
-    const float* row = base + r * pitch;
+    const float* row = L.base + r * L.pitch;
     auto pair2 = [&](int a, int b) {  // texels (off[a], off[a] + 1, off[b], off[b] + 1) of this row
       const __m128 lo = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(row + off[a])));
       return _mm_loadh_pi(lo, reinterpret_cast<const __m64*>(row + off[b]));
@@ -160,11 +174,13 @@ inline void fetch_taps8(const TextureLevel& L, __m256i i0, __m256i j0, __m256 te
     tex[2 * r] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(2, 0, 2, 0));
     tex[2 * r + 1] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(3, 1, 3, 1));
   }
+  // A lane is at an edge when clamping moved its pair: i0 < 0 or i0 > W − 2, likewise j0.
+  const __m256i moved = _mm256_or_si256(_mm256_xor_si256(xb, i0), _mm256_xor_si256(yb, j0));
+  if (_mm256_testz_si256(moved, moved)) [[likely]]
+    return;
   // i0 < 0: x1 is texel 0 too (the left one); i0 > W − 2: x0 is texel W − 1 too (the right one). Rows alike.
-  const __m256i left = _mm256_cmpgt_epi32(zero, i0), right = _mm256_cmpgt_epi32(i0, w2);
-  const __m256i below = _mm256_cmpgt_epi32(zero, j0), above = _mm256_cmpgt_epi32(j0, h2);
-  const __m256i edge = _mm256_or_si256(_mm256_or_si256(left, right), _mm256_or_si256(below, above));
-  if (_mm256_testz_si256(edge, edge)) return;
+  const __m256i left = _mm256_cmpgt_epi32(zero, i0), right = _mm256_cmpgt_epi32(i0, L.w2);
+  const __m256i below = _mm256_cmpgt_epi32(zero, j0), above = _mm256_cmpgt_epi32(j0, L.h2);
   for (int r = 0; r < 4; r += 2) {
     tex[r + 1] = _mm256_blendv_ps(tex[r + 1], tex[r], _mm256_castsi256_ps(left));
     tex[r] = _mm256_blendv_ps(tex[r], tex[r + 1], _mm256_castsi256_ps(right));
@@ -177,13 +193,11 @@ inline void fetch_taps8(const TextureLevel& L, __m256i i0, __m256i j0, __m256 te
 
 // Eight lookups at (s, t, ref) per lane; F is d24 or d32f (32-bit texels fetched directly).
 template <TexelFormat F, bool kBorderWrap>
-inline __m256 pcf_lequal_gather8(const TextureLevel& L, __m256 s, __m256 t, __m256 ref, float border_depth) {
+inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 ref, float border_depth) {
   static_assert(F == TexelFormat::d24 || F == TexelFormat::d32f);
   const __m256 half = _mm256_set1_ps(0.5f), lo = _mm256_set1_ps(-kMaxTexelCoord), hi = _mm256_set1_ps(kMaxTexelCoord);
-  const __m256 u =
-      _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(s, _mm256_set1_ps(L.fwidth)), half), lo), hi);
-  const __m256 v =
-      _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(t, _mm256_set1_ps(L.fheight)), half), lo), hi);
+  const __m256 u = _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(s, L.fwidth), half), lo), hi);
+  const __m256 v = _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(t, L.fheight), half), lo), hi);
   const __m256 fu = _mm256_floor_ps(u), fv = _mm256_floor_ps(v);
   const __m256 a = _mm256_sub_ps(u, fu), b = _mm256_sub_ps(v, fv);
   const __m256i i0 = _mm256_cvttps_epi32(fu), j0 = _mm256_cvttps_epi32(fv);
@@ -204,13 +218,13 @@ inline __m256 pcf_lequal_gather8(const TextureLevel& L, __m256 s, __m256 t, __m2
   if constexpr (kBorderWrap) {
     const __m256 rb = _mm256_and_ps(_mm256_cmp_ps(ref, _mm256_set1_ps(border_depth), _CMP_LE_OQ), onef);
     const __m256i one = _mm256_set1_epi32(1);
-    const __m256i wm = _mm256_set1_epi32(L.width - 1), hm = _mm256_set1_epi32(L.height - 1);
     const __m256i i1 = _mm256_add_epi32(i0, one), j1 = _mm256_add_epi32(j0, one);
     auto inside = [](__m256i i, __m256i max) {
       return _mm256_andnot_si256(_mm256_cmpgt_epi32(_mm256_setzero_si256(), i),
                                  _mm256_xor_si256(_mm256_cmpgt_epi32(i, max), _mm256_set1_epi32(-1)));
     };
-    const __m256i ix0 = inside(i0, wm), ix1 = inside(i1, wm), iy0 = inside(j0, hm), iy1 = inside(j1, hm);
+    const __m256i ix0 = inside(i0, L.wmax), ix1 = inside(i1, L.wmax), iy0 = inside(j0, L.hmax),
+                  iy1 = inside(j1, L.hmax);
     const __m256i in[4] = {_mm256_and_si256(ix0, iy0), _mm256_and_si256(ix1, iy0), _mm256_and_si256(ix0, iy1),
                            _mm256_and_si256(ix1, iy1)};
     for (int k = 0; k < 4; ++k) r[k] = _mm256_blendv_ps(rb, r[k], _mm256_castsi256_ps(in[k]));
@@ -227,7 +241,7 @@ inline void pcf_lequal_gather8(const TextureLevel& L, const glm::vec3* p, float*
   const float* pf = &p[0].x;
   const __m256 s = _mm256_i32gather_ps(pf, stride3, 4), t = _mm256_i32gather_ps(pf + 1, stride3, 4);
   const __m256 ref = _mm256_i32gather_ps(pf + 2, stride3, 4);
-  _mm256_storeu_ps(out, pcf_lequal_gather8<F, kBorderWrap>(L, s, t, ref, border_depth));
+  _mm256_storeu_ps(out, pcf_lequal_gather8<F, kBorderWrap>(Pcf8Level(L), s, t, ref, border_depth));
 }
 
 #endif  // SHADOWLAB_SIMD_AVX2
@@ -242,18 +256,32 @@ inline float pcf_lequal(const TextureLevel& L, glm::vec3 str, float border_depth
 #endif
 }
 
+#if !defined(SHADOWLAB_SIMD_AVX2)
+// Scalar builds: the eight-lane form runs lane by lane on the level itself.
+struct Pcf8Level {
+  TextureLevel level;
+  explicit Pcf8Level(const TextureLevel& L) : level(L) {}
+};
+#endif
+
 // Eight lookups held in SIMD lanes (a fragment_pair shader's coordinates): lane l is
 // pcf_lequal(L, (s[l], t[l], ref[l])), bit for bit. Gathers for d24 and d32f, else lane by lane.
 template <TexelFormat F, bool kBorderWrap>
-inline raster::simd::VecF32 pcf_lequal_x8(const TextureLevel& L, raster::simd::VecF32 s, raster::simd::VecF32 t,
+inline raster::simd::VecF32 pcf_lequal_x8(const Pcf8Level& L, raster::simd::VecF32 s, raster::simd::VecF32 t,
                                           raster::simd::VecF32 ref, float border_depth) {
 #if defined(SHADOWLAB_SIMD_AVX2)
   if constexpr (F != TexelFormat::d16) return {pcf_lequal_gather8<F, kBorderWrap>(L, s.v, t.v, ref.v, border_depth)};
 #endif
   alignas(32) float ps[8], pt[8], pr[8], out[8];
   s.store(ps), t.store(pt), ref.store(pr);
-  for (int l = 0; l < 8; ++l) out[l] = pcf_lequal<F, kBorderWrap>(L, glm::vec3(ps[l], pt[l], pr[l]), border_depth);
+  for (int l = 0; l < 8; ++l)
+    out[l] = pcf_lequal<F, kBorderWrap>(L.level, glm::vec3(ps[l], pt[l], pr[l]), border_depth);
   return raster::simd::VecF32::load(out);
+}
+template <TexelFormat F, bool kBorderWrap>
+inline raster::simd::VecF32 pcf_lequal_x8(const TextureLevel& L, raster::simd::VecF32 s, raster::simd::VecF32 t,
+                                          raster::simd::VecF32 ref, float border_depth) {
+  return pcf_lequal_x8<F, kBorderWrap>(Pcf8Level(L), s, t, ref, border_depth);
 }
 
 // The common shadow case: compare LEQUAL, LINEAR without mips (so λ cannot matter), clamp_to_edge or

@@ -23,10 +23,13 @@ template <TexelFormat F, bool kBorderWrap>
 struct PcfKernel {
   TextureLevel level;
   float border_depth;
+  detail::Pcf8Level wide;  // the level's constants for the eight-lane form, splatted once
+
+  PcfKernel(const TextureLevel& level, float border_depth) : level(level), border_depth(border_depth), wide(level) {}
   float operator()(glm::vec3 str) const { return detail::pcf_lequal<F, kBorderWrap>(level, str, border_depth); }
   // Eight lookups in SIMD lanes (for fragment_pair shaders), each equal to the one-lookup form.
   raster::simd::VecF32 operator()(raster::simd::VecF32 s, raster::simd::VecF32 t, raster::simd::VecF32 ref) const {
-    return detail::pcf_lequal_x8<F, kBorderWrap>(level, s, t, ref, border_depth);
+    return detail::pcf_lequal_x8<F, kBorderWrap>(wide, s, t, ref, border_depth);
   }
 };
 // ... or the generic lookups for any other sampler.

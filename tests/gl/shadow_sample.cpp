@@ -51,7 +51,9 @@ layout(location = 0) out vec4 o_color;
 void main() {
   vec2 p = gl_FragCoord.xy * u_inv_target;
   float ref = 0.5 * (p.x + p.y);
-#if TAPS == 1
+#if TAPS == 0
+  float lit = ref;  // no lookup: the pass without its texture work
+#elif TAPS == 1
   float lit = texture(u_map, vec3(p, ref));
 #else
   float lit = 0.0;
@@ -172,7 +174,7 @@ std::vector<float> Context::sample_shadow(const ShadowSampleQuery& q) {
 std::vector<double> Context::time_pcf_pass(int width, int height, const ShadowSampleQuery& tex, int taps,
                                            int repeat) {
   make_current();
-  if (taps < 1 || taps > 16) throw std::runtime_error("glref: PCF pass taps must be 1..16");
+  if (taps < 0 || taps > 16) throw std::runtime_error("glref: PCF pass taps must be 0..16");
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
     throw std::runtime_error("glref: PCF pass target is outside 1..16384");
   Framebuffer fbo;
@@ -180,7 +182,7 @@ std::vector<double> Context::time_pcf_pass(int width, int height, const ShadowSa
   Texture map = make_shadow_map(tex, profile_);
   Program program("PCF pass", kFullScreenVertexShader, pcf_pass_shader(taps));
   glUseProgram(program.get());
-  glUniform1i(program.uniform("u_map"), 0);
+  if (taps > 0) glUniform1i(program.uniform("u_map"), 0);
   glUniform2f(program.uniform("u_inv_target"), 1.0f / float(width), 1.0f / float(height));
   if (taps > 1) {
     glUniform2f(program.uniform("u_radius"), 2.0f / float(tex.tex_width), 2.0f / float(tex.tex_height));
