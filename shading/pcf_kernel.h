@@ -213,10 +213,10 @@ inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 
     ref = _mm256_min_ps(_mm256_max_ps(ref, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
   }
   const __m256 onef = _mm256_set1_ps(1.0f);
-  __m256 r[4];
-  for (int k = 0; k < 4; ++k) r[k] = _mm256_and_ps(_mm256_cmp_ps(ref, tex[k], _CMP_LE_OQ), onef);
+  __m256 r[4];  // compare masks: all ones where the tap passes (ref <= texel)
+  for (int k = 0; k < 4; ++k) r[k] = _mm256_cmp_ps(ref, tex[k], _CMP_LE_OQ);
   if constexpr (kBorderWrap) {
-    const __m256 rb = _mm256_and_ps(_mm256_cmp_ps(ref, _mm256_set1_ps(border_depth), _CMP_LE_OQ), onef);
+    const __m256 rb = _mm256_cmp_ps(ref, _mm256_set1_ps(border_depth), _CMP_LE_OQ);
     const __m256i one = _mm256_set1_epi32(1);
     const __m256i i1 = _mm256_add_epi32(i0, one), j1 = _mm256_add_epi32(j0, one);
     auto inside = [](__m256i i, __m256i max) {
@@ -229,19 +229,25 @@ inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 
                            _mm256_and_si256(ix1, iy1)};
     for (int k = 0; k < 4; ++k) r[k] = _mm256_blendv_ps(rb, r[k], _mm256_castsi256_ps(in[k]));
   }
-  const __m256 xa = _mm256_add_ps(r[0], _mm256_mul_ps(a, _mm256_sub_ps(r[1], r[0])));
-  const __m256 xb = _mm256_add_ps(r[2], _mm256_mul_ps(a, _mm256_sub_ps(r[3], r[2])));
+  // lerp(a, r0, r1) = r0 + a · (r1 − r0) with r0, r1 in {0, 1} is exactly 0, 1, a (r0 = 0, r1 = 1) or
+  // 1 + a · (−1) = 1 − a (r0 = 1, r1 = 0): chosen by the masks, the same bits with fewer operations.
+  const __m256 one_minus_a = _mm256_sub_ps(onef, a);
+  auto lerp01 = [&](__m256 m0, __m256 m1) {
+    return _mm256_blendv_ps(_mm256_and_ps(m1, a), _mm256_blendv_ps(one_minus_a, onef, m1), m0);
+  };
+  const __m256 xa = lerp01(r[0], r[1]);
+  const __m256 xb = lerp01(r[2], r[3]);
   return _mm256_add_ps(xa, _mm256_mul_ps(b, _mm256_sub_ps(xb, xa)));
 }
 
 // Eight lookups from an array of (s, t, ref).
 template <TexelFormat F, bool kBorderWrap>
-inline void pcf_lequal_gather8(const TextureLevel& L, const glm::vec3* p, float* out, float border_depth) {
+inline void pcf_lequal_gather8(const Pcf8Level& L, const glm::vec3* p, float* out, float border_depth) {
   const __m256i stride3 = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
   const float* pf = &p[0].x;
   const __m256 s = _mm256_i32gather_ps(pf, stride3, 4), t = _mm256_i32gather_ps(pf + 1, stride3, 4);
   const __m256 ref = _mm256_i32gather_ps(pf + 2, stride3, 4);
-  _mm256_storeu_ps(out, pcf_lequal_gather8<F, kBorderWrap>(Pcf8Level(L), s, t, ref, border_depth));
+  _mm256_storeu_ps(out, pcf_lequal_gather8<F, kBorderWrap>(L, s, t, ref, border_depth));
 }
 
 #endif  // SHADOWLAB_SIMD_AVX2
@@ -316,8 +322,12 @@ template <TexelFormat F, bool kBorderWrap>
 inline void pcf_lequal_many(const TextureLevel& L, const glm::vec3* p, float* out, size_t n, float border_depth) {
   size_t k = 0;
 #if defined(SHADOWLAB_SIMD_AVX2)
-  if constexpr (F != TexelFormat::d16)
-    for (; k + 8 <= n; k += 8) pcf_lequal_gather8<F, kBorderWrap>(L, p + k, out + k, border_depth);
+  if constexpr (F != TexelFormat::d16) {
+    if (n >= 8) {
+      const Pcf8Level wide(L);
+      for (; k + 8 <= n; k += 8) pcf_lequal_gather8<F, kBorderWrap>(wide, p + k, out + k, border_depth);
+    }
+  }
 #endif
   for (; k < n; ++k) out[k] = pcf_lequal<F, kBorderWrap>(L, p[k], border_depth);
 }
