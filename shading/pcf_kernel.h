@@ -3,8 +3,9 @@
 // the same order (so results are bit-identical to the generic lookups), without switches or branches:
 //   pcf_lequal_scalar  the scalar twin, always compiled;
 //   pcf_lequal_sse     one lookup, its four taps in one SSE register (AVX2 builds);
-//   pcf_lequal_gather8 eight lookups at once with AVX2 gathers (d24, d32f);
-//   pcf_lequal_x8      eight lookups in raster/simd lanes: the gathers, or lane by lane (d16, scalar builds).
+//   pcf_lequal_gather8 eight lookups at once in AVX2 lanes (d16, d24, d32f);
+//   pcf_lequal_x8      eight lookups in raster/simd lanes: gather8, or lane by lane (scalar builds, and d16 maps
+//                      one texel wide or high).
 // The only intrinsics in shading/: raster/simd's eight-lane types have no floor or gather.
 #pragma once
 #include <algorithm>
@@ -124,7 +125,8 @@ struct Pcf8Level {
   __m256 fwidth, fheight;
   __m256i wmax, hmax;  // width − 1, height − 1
   __m256i w2, h2;      // width − 2, height − 2: the last column / row a texel pair can start at
-  __m256i vpitch;      // texels from one row to the next
+  __m256i vpitch;      // 32-bit texels from one row to the next
+  __m256i vpitch16;    // 16-bit texels from one row to the next
   const float* base;
   int pitch;
   bool tiny;  // one texel wide or high: no pair fits, so the kernel gathers
@@ -133,9 +135,30 @@ struct Pcf8Level {
         wmax(_mm256_set1_epi32(L.width - 1)), hmax(_mm256_set1_epi32(L.height - 1)),
         w2(_mm256_set1_epi32(L.width - 2)), h2(_mm256_set1_epi32(L.height - 2)),
         // Element offsets fit int32: rows are at most 16384 texels and a target's pitch at most 16384.
-        vpitch(_mm256_set1_epi32(int(L.row_bytes / 4))), base(reinterpret_cast<const float*>(L.data)),
+        vpitch(_mm256_set1_epi32(int(L.row_bytes / 4))), vpitch16(_mm256_set1_epi32(int(L.row_bytes / 2))),
+        base(reinterpret_cast<const float*>(L.data)),
         pitch(int(L.row_bytes / 4)), tiny(L.width < 2 || L.height < 2) {}
 };
+
+// Lanes whose pair start was clamped (i0 < 0 or i0 > W − 2, likewise j0) read the pair next to their footprint:
+// there both x taps are the edge texel. xb, yb are the clamped starts the pairs were read at.
+inline void fix_edge_taps8(const Pcf8Level& L, __m256i i0, __m256i j0, __m256i xb, __m256i yb, __m256 tex[4]) {
+  const __m256i moved = _mm256_or_si256(_mm256_xor_si256(xb, i0), _mm256_xor_si256(yb, j0));
+  if (_mm256_testz_si256(moved, moved)) [[likely]]
+    return;
+  // i0 < 0: x1 is texel 0 too (the left one); i0 > W − 2: x0 is texel W − 1 too (the right one). Rows alike.
+  const __m256i zero = _mm256_setzero_si256();
+  const __m256i left = _mm256_cmpgt_epi32(zero, i0), right = _mm256_cmpgt_epi32(i0, L.w2);
+  const __m256i below = _mm256_cmpgt_epi32(zero, j0), above = _mm256_cmpgt_epi32(j0, L.h2);
+  for (int r = 0; r < 4; r += 2) {
+    tex[r + 1] = _mm256_blendv_ps(tex[r + 1], tex[r], _mm256_castsi256_ps(left));
+    tex[r] = _mm256_blendv_ps(tex[r], tex[r + 1], _mm256_castsi256_ps(right));
+  }
+  for (int c = 0; c < 2; ++c) {
+    tex[c + 2] = _mm256_blendv_ps(tex[c + 2], tex[c], _mm256_castsi256_ps(below));
+    tex[c] = _mm256_blendv_ps(tex[c], tex[c + 2], _mm256_castsi256_ps(above));
+  }
+}
 
 // The four 32-bit texels of eight bilinear footprints, as raw bits in float lanes: tex[0..3] at (x0, y0),
 // (x1, y0), (x0, y1), (x1, y1) with x0 = clamp(i0, 0, W − 1), x1 = clamp(i0 + 1, 0, W − 1) and likewise y0, y1
@@ -174,27 +197,32 @@ inline void fetch_taps8(const Pcf8Level& L, __m256i i0, __m256i j0, __m256 tex[4
     tex[2 * r] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(2, 0, 2, 0));
     tex[2 * r + 1] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(3, 1, 3, 1));
   }
-  // A lane is at an edge when clamping moved its pair: i0 < 0 or i0 > W − 2, likewise j0.
-  const __m256i moved = _mm256_or_si256(_mm256_xor_si256(xb, i0), _mm256_xor_si256(yb, j0));
-  if (_mm256_testz_si256(moved, moved)) [[likely]]
-    return;
-  // i0 < 0: x1 is texel 0 too (the left one); i0 > W − 2: x0 is texel W − 1 too (the right one). Rows alike.
-  const __m256i left = _mm256_cmpgt_epi32(zero, i0), right = _mm256_cmpgt_epi32(i0, L.w2);
-  const __m256i below = _mm256_cmpgt_epi32(zero, j0), above = _mm256_cmpgt_epi32(j0, L.h2);
-  for (int r = 0; r < 4; r += 2) {
-    tex[r + 1] = _mm256_blendv_ps(tex[r + 1], tex[r], _mm256_castsi256_ps(left));
-    tex[r] = _mm256_blendv_ps(tex[r], tex[r + 1], _mm256_castsi256_ps(right));
-  }
-  for (int c = 0; c < 2; ++c) {
-    tex[c + 2] = _mm256_blendv_ps(tex[c + 2], tex[c], _mm256_castsi256_ps(below));
-    tex[c] = _mm256_blendv_ps(tex[c], tex[c + 2], _mm256_castsi256_ps(above));
-  }
+  fix_edge_taps8(L, i0, j0, xb, yb, tex);
 }
 
-// Eight lookups at (s, t, ref) per lane; F is d24 or d32f (32-bit texels fetched directly).
+// The same four taps of a d16 map (at least 2 × 2), decoded as Texel<d16> does (code / 65535, an exact
+// conversion and a correctly rounded division): each lane's texel pair (x0, x1) is one 32-bit word, gathered
+// once per row at column clamp(i0, 0, W − 2), and lanes at an edge are fixed as for 32-bit texels.
+inline void fetch_taps8_d16(const Pcf8Level& L, __m256i i0, __m256i j0, __m256 tex[4]) {
+  const __m256i zero = _mm256_setzero_si256();
+  const __m256i xb = _mm256_min_epi32(_mm256_max_epi32(i0, zero), L.w2);
+  const __m256i yb = _mm256_min_epi32(_mm256_max_epi32(j0, zero), L.h2);
+  const __m256i off = _mm256_add_epi32(_mm256_mullo_epi32(yb, L.vpitch16), xb);  // in 16-bit texels
+  const int* base = reinterpret_cast<const int*>(L.level.data);
+  const __m256i low = _mm256_set1_epi32(0xFFFF);
+  const __m256 maxcode = _mm256_set1_ps(65535.0f);
+  for (int r = 0; r < 2; ++r) {
+    const __m256i pair = _mm256_i32gather_epi32(base, _mm256_add_epi32(off, r ? L.vpitch16 : zero), 2);
+    tex[2 * r] = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(pair, low)), maxcode);
+    tex[2 * r + 1] = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_srli_epi32(pair, 16)), maxcode);
+  }
+  fix_edge_taps8(L, i0, j0, xb, yb, tex);
+}
+
+// Eight lookups at (s, t, ref) per lane. A d16 map must be at least 2 × 2 (pcf_lequal_x8 sees to it).
 template <TexelFormat F, bool kBorderWrap>
 inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 ref, float border_depth) {
-  static_assert(F == TexelFormat::d24 || F == TexelFormat::d32f);
+  static_assert(F == TexelFormat::d16 || F == TexelFormat::d24 || F == TexelFormat::d32f);
   const __m256 half = _mm256_set1_ps(0.5f), lo = _mm256_set1_ps(-kMaxTexelCoord), hi = _mm256_set1_ps(kMaxTexelCoord);
   const __m256 u = _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(s, L.fwidth), half), lo), hi);
   const __m256 v = _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(t, L.fheight), half), lo), hi);
@@ -202,8 +230,11 @@ inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 
   const __m256 a = _mm256_sub_ps(u, fu), b = _mm256_sub_ps(v, fv);
   const __m256i i0 = _mm256_cvttps_epi32(fu), j0 = _mm256_cvttps_epi32(fv);
   __m256 tex[4];
-  fetch_taps8(L, i0, j0, tex);
-  if constexpr (F == TexelFormat::d24) {
+  if constexpr (F == TexelFormat::d16) fetch_taps8_d16(L, i0, j0, tex);
+  else fetch_taps8(L, i0, j0, tex);
+  if constexpr (F == TexelFormat::d16) {
+    ref = _mm256_min_ps(_mm256_max_ps(ref, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));  // compare_reference
+  } else if constexpr (F == TexelFormat::d24) {
     // Low 24 bits as a float code, divided by 2^24 − 1 (the same correctly rounded division as Texel<d24>),
     // and the reference clamped to [0, 1] as compare_reference does.
     const __m256i mask = _mm256_set1_epi32(0xFFFFFF);
@@ -276,7 +307,7 @@ template <TexelFormat F, bool kBorderWrap>
 inline raster::simd::VecF32 pcf_lequal_x8(const Pcf8Level& L, raster::simd::VecF32 s, raster::simd::VecF32 t,
                                           raster::simd::VecF32 ref, float border_depth) {
 #if defined(SHADOWLAB_SIMD_AVX2)
-  if constexpr (F != TexelFormat::d16) return {pcf_lequal_gather8<F, kBorderWrap>(L, s.v, t.v, ref.v, border_depth)};
+  if (F != TexelFormat::d16 || !L.tiny) return {pcf_lequal_gather8<F, kBorderWrap>(L, s.v, t.v, ref.v, border_depth)};
 #endif
   alignas(32) float ps[8], pt[8], pr[8], out[8];
   s.store(ps), t.store(pt), ref.store(pr);
@@ -317,16 +348,15 @@ inline float pcf_fast(const Texture2D& t, const Sampler& s, glm::vec3 str) {
   }
 }
 
-// n lookups: eight at a time with gathers for 32-bit formats, the rest one by one.
+// n lookups: eight at a time in AVX2 lanes, the rest one by one.
 template <TexelFormat F, bool kBorderWrap>
 inline void pcf_lequal_many(const TextureLevel& L, const glm::vec3* p, float* out, size_t n, float border_depth) {
   size_t k = 0;
 #if defined(SHADOWLAB_SIMD_AVX2)
-  if constexpr (F != TexelFormat::d16) {
-    if (n >= 8) {
-      const Pcf8Level wide(L);
+  if (n >= 8) {
+    const Pcf8Level wide(L);
+    if (F != TexelFormat::d16 || !wide.tiny)
       for (; k + 8 <= n; k += 8) pcf_lequal_gather8<F, kBorderWrap>(wide, p + k, out + k, border_depth);
-    }
   }
 #endif
   for (; k < n; ++k) out[k] = pcf_lequal<F, kBorderWrap>(L, p[k], border_depth);
