@@ -1,6 +1,7 @@
 // The camera pass's shader: world position and normal as perspective-correct varyings, Blinn-Phong per light
 // (shading/lighting.h) with the ambient term untouched and diffuse + specular scaled by the light's shadow
-// visibility. Each light is read with its own technique and filter, chosen once per quad (light_visibility).
+// visibility. Each light is read with its own technique and filter, chosen once per quad (light_visibility) or,
+// on the pipeline's wide path (fragment_pair), once per quad pair with the filters eight lanes wide.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "raster/shader.h"
+#include "raster/simd/vec.h"
 #include "shading/lighting.h"
 #include "shading/techniques/classic.h"
 #include "shading/techniques/omni_read.h"
@@ -34,7 +36,7 @@ struct LightRecord {
   shading::tech::OmniReader omni;  // cube, paraboloid or pyramid
 };
 
-// Visibility of up to four points of a quad from one light; 1 where the light casts no shadow.
+// Visibility of a batch of points (a quad's) from one light; 1 where the light casts no shadow.
 inline void light_visibility(const LightRecord& l, std::span<const shading::tech::ShadowQuery> q, std::span<float> vis) {
   switch (l.read) {
     case ShadowRead::classic: shading::tech::classic_visibility(l.classic, q, vis); return;
@@ -42,6 +44,14 @@ inline void light_visibility(const LightRecord& l, std::span<const shading::tech
     case ShadowRead::none: break;
   }
   for (float& v : vis) v = 1.0f;
+}
+
+// The same for up to eight points (a quad pair's), bit-identical per point: the classic map is read with the
+// eight-lane filters (classic_visibility_x8); omnidirectional maps are still read point by point.
+inline void light_visibility_x8(const LightRecord& l, std::span<const shading::tech::ShadowQuery> q,
+                                std::span<float> vis) {
+  if (l.read == ShadowRead::classic) return shading::tech::classic_visibility_x8(l.classic, q, vis);
+  light_visibility(l, q, vis);
 }
 
 // Per-draw (per instance) uniforms besides the filter.
@@ -75,41 +85,79 @@ struct CameraShader {
   // Lights are the outer loop so that each light's reader makes its choices once per quad; helper lanes are
   // neither shaded nor looked up.
   void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const {
-    std::array<shading::tech::ShadowQuery, 4> pts;
-    std::array<glm::vec3, 4> view, color;
-    std::array<int, 4> lane_of;
-    size_t n = 0;
+    Points<4> pts;
     for (int lane = 0; lane < 4; ++lane) {
       if (((q.live >> lane) & 1u) == 0) continue;  // helper lane: never written
-      const Varyings& in = q.in[size_t(lane)];
-      glm::vec3 nrm = glm::normalize(in.normal);
-      if (!q.front_facing) nrm = -nrm;  // double-sided surfaces light their back side
       const glm::vec4& fc = q.frag_coord[size_t(lane)];
-      pts[n] = {in.world, nrm, glm::vec2(fc.x, fc.y)};
-      view[n] = glm::normalize(u.eye - in.world);
+      pts.add(*this, q.in[size_t(lane)], q.front_facing, glm::vec2(fc.x, fc.y), lane);
+    }
+    shade(pts, [](const LightRecord& l, auto q, auto vis) { light_visibility(l, q, vis); });
+    for (size_t i = 0; i < pts.n; ++i) out.color[size_t(pts.lane_of[i])] = glm::vec4(pts.color[i], 1.0f);
+  }
+
+  // The same on a quad pair, pixel by pixel the same operations, with each light's visibility asked for the
+  // pair's covered pixels at once so the filters run eight lanes wide (light_visibility_x8).
+  void fragment_pair(const raster::QuadPairIn<Varyings>& q, raster::QuadPairOut& out) const {
+    static_assert(raster::kVaryingFloats<Varyings> == 6);
+    alignas(32) float in[6][8], fx[8], fy[8];
+    for (size_t k = 0; k < 6; ++k) q.in[k].store(in[k]);
+    q.frag_x.store(fx), q.frag_y.store(fy);
+    Points<8> pts;
+    for (int lane = 0; lane < 8; ++lane) {
+      if (((q.live >> lane) & 1u) == 0) continue;  // helper lane: never written
+      const Varyings v{{in[0][lane], in[1][lane], in[2][lane]}, {in[3][lane], in[4][lane], in[5][lane]}};
+      pts.add(*this, v, q.front_facing, glm::vec2(fx[lane], fy[lane]), lane);
+    }
+    shade(pts, [](const LightRecord& l, auto q, auto vis) { light_visibility_x8(l, q, vis); });
+    alignas(32) float ch[4][8] = {};
+    for (size_t i = 0; i < pts.n; ++i) {
+      const int lane = pts.lane_of[i];
+      ch[0][lane] = pts.color[i].r, ch[1][lane] = pts.color[i].g, ch[2][lane] = pts.color[i].b, ch[3][lane] = 1.0f;
+    }
+    for (size_t c = 0; c < 4; ++c) out.color[c] = raster::simd::VecF32::load(ch[c]);
+  }
+
+ private:
+  // The covered pixels of a quad or pair, packed: what a light's visibility is asked for, and their colours.
+  template <size_t N>
+  struct Points {
+    std::array<shading::tech::ShadowQuery, N> q;
+    std::array<glm::vec3, N> view, color;
+    std::array<int, N> lane_of;
+    size_t n = 0;
+    void add(const CameraShader& s, const Varyings& in, bool front_facing, glm::vec2 frag, int lane) {
+      glm::vec3 nrm = glm::normalize(in.normal);
+      if (!front_facing) nrm = -nrm;  // double-sided surfaces light their back side
+      q[n] = {in.world, nrm, frag};
+      view[n] = glm::normalize(s.u.eye - in.world);
       color[n] = glm::vec3(0.0f);
       lane_of[n++] = lane;
     }
+  };
+
+  // Blinn-Phong over every light, the points' visibility from `visibility` (a batch reader, once per light).
+  template <size_t N, class Visibility>
+  void shade(Points<N>& pts, Visibility&& visibility) const {
     for (const LightRecord& l : lights) {
-      std::array<shading::DirectLight, 4> d;
-      std::array<shading::tech::ShadowQuery, 4> lit_pts;
-      std::array<size_t, 4> lit_of;
+      std::array<shading::DirectLight, N> d;
+      std::array<shading::tech::ShadowQuery, N> lit_pts;
+      std::array<size_t, N> lit_of;
       size_t m = 0;
-      for (size_t i = 0; i < n; ++i) {
-        d[i] = shading::direct_light(u.material, shading::sample_light(l.light, pts[i].p), pts[i].n, view[i]);
-        color[i] += u.material.albedo * l.light.color * u.material.ambient;
+      for (size_t i = 0; i < pts.n; ++i) {
+        d[i] = shading::direct_light(u.material, shading::sample_light(l.light, pts.q[i].p), pts.q[i].n, pts.view[i]);
+        pts.color[i] += u.material.albedo * l.light.color * u.material.ambient;
         if (d[i].diffuse == glm::vec3(0.0f) && d[i].specular == glm::vec3(0.0f)) continue;
-        lit_pts[m] = pts[i];
+        lit_pts[m] = pts.q[i];
         lit_of[m++] = i;
       }
-      std::array<float, 4> vis{1.0f, 1.0f, 1.0f, 1.0f};
-      if (u.receives_shadows && m > 0) light_visibility(l, std::span(lit_pts.data(), m), std::span(vis.data(), m));
+      std::array<float, N> vis;
+      vis.fill(1.0f);
+      if (u.receives_shadows && m > 0) visibility(l, std::span(lit_pts.data(), m), std::span(vis.data(), m));
       for (size_t k = 0; k < m; ++k) {
         const size_t i = lit_of[k];
-        color[i] += vis[k] * (d[i].diffuse + d[i].specular * u.specular_color);
+        pts.color[i] += vis[k] * (d[i].diffuse + d[i].specular * u.specular_color);
       }
     }
-    for (size_t i = 0; i < n; ++i) out.color[size_t(lane_of[i])] = glm::vec4(color[i], 1.0f);
   }
 };
 

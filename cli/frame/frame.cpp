@@ -13,6 +13,7 @@
 #include "cli/frame/frame_lights.h"
 #include "cli/frame/projective_shaders.h"
 #include "cli/frame/frame_omni.h"
+#include "raster/quad_path_only.h"
 #include "scenes/camera_math.h"
 #include "scenes/scene_queries.h"
 
@@ -166,9 +167,12 @@ Frame render_frame(const scenes::Scene& scene, const FrameOptions& options, rast
       raster::DrawState s;
       s.cull = mat.double_sided ? raster::CullMode::none : raster::CullMode::back;
       // Drawn once, plus the projective maps overlapping it (projective_shaders.h).
-      frame.stats.draws += draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, shader,
-                                         std::span<const CameraVertex>(mesh_vertices[inst.mesh]),
-                                         std::span<const uint32_t>(mesh.indices), projective, index);
+      auto draw = [&](const auto& sh) {
+        return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, sh,
+                             std::span<const CameraVertex>(mesh_vertices[inst.mesh]),
+                             std::span<const uint32_t>(mesh.indices), projective, index);
+      };
+      frame.stats.draws += options.quad_fragments ? draw(raster::QuadPathOnly<CameraShader>{shader}) : draw(shader);
     }
   }
   frame.stats.camera_ms = ms_since(t_camera);

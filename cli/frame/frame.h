@@ -40,6 +40,7 @@ struct FrameOptions {
   std::optional<int> projective_textures;      // projective single-pass: shadow textures per draw (1..8)
   bool export_maps = true;                     // projective: one EXR record per caster in Frame::maps
   glm::vec4 clear_color{0.0f, 0.0f, 0.4f, 1.0f};  // the tutorial's glClearColor (alpha 1)
+  bool quad_fragments = false;  // camera pass on the quad path only (fragment()), for tests of the wide path
 };
 
 struct FrameStats {

@@ -1,8 +1,10 @@
 // The classic shadow map of the tutorial: one pass per light, orthographic for a directional light and
 // perspective for a spot. Three steps, each on plain data: plan (layout + light matrices), build (the depth
 // pass, with the `offset` bias and the back-face option as its draw state), read (a ClassicReader snapshotted
-// once per draw and classic_visibility per fragment or per quad: bias, projection, filter).
+// once per draw and classic_visibility per fragment, per quad or, eight lanes wide, per quad pair: bias,
+// projection, filter).
 #pragma once
+#include <array>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -14,6 +16,7 @@
 #include "shading/techniques/depth_pass.h"
 #include "shading/techniques/light_frustum.h"
 #include "shading/techniques/shadow_filters.h"
+#include "shading/techniques/shadow_filters_x8.h"
 #include "shading/techniques/shadow_map_set.h"
 #include "shading/techniques/technique_types.h"
 
@@ -69,25 +72,33 @@ inline float depth_bias(const BiasParams& b, float ndotl) {
   }
 }
 
-// Visibility in [0, 1] of world point p with unit normal n, seen at window position frag. A spot light leaves
-// everything outside its map (and behind it) unlit; a directional map's outside reads as lit (border depth 1).
-template <class Filter, bool kPcfTaps>
-float classic_visibility(const ClassicReader& r, glm::vec3 p, glm::vec3 n, glm::vec2 frag) {
+// Where world point p with unit normal n, seen at window position frag, reads the map: its SampleContext, or
+// false where a spot light leaves it unlit without a lookup (behind the light or outside its map).
+inline bool classic_context(const ClassicReader& r, glm::vec3 p, glm::vec3 n, glm::vec2 frag, SampleContext& ctx) {
   const glm::vec3 to_light = r.kind == LightKind::spot ? glm::normalize(r.position - p) : -r.direction;
   const float ndotl = glm::dot(n, to_light);
   glm::vec3 q = p;
   if (r.bias.kind == BiasKind::normal) q = p + n * r.bias.normal_offset;
   const glm::vec4 c = r.shadow * glm::vec4(q, 1.0f);
   const float b = depth_bias(r.bias, ndotl);
-  SampleContext ctx{glm::vec2(c.x, c.y), c.z - b, frag, p};
+  ctx = SampleContext{glm::vec2(c.x, c.y), c.z - b, frag, p};
   if (r.perspective) {
     // textureProj: (s, t, r − bias) · (1/q), as the tutorial's (ShadowCoord.z − bias) / ShadowCoord.w.
-    if (!(c.w > 0.0f)) return 0.0f;
+    if (!(c.w > 0.0f)) return false;
     const float w = 1.0f / c.w;
     ctx.st = glm::vec2(c.x * w, c.y * w);
     ctx.ref = (c.z - b) * w;
-    if (!(ctx.st.x >= 0.0f && ctx.st.x <= 1.0f && ctx.st.y >= 0.0f && ctx.st.y <= 1.0f)) return 0.0f;
+    if (!(ctx.st.x >= 0.0f && ctx.st.x <= 1.0f && ctx.st.y >= 0.0f && ctx.st.y <= 1.0f)) return false;
   }
+  return true;
+}
+
+// Visibility in [0, 1] of world point p with unit normal n, seen at window position frag. A spot light leaves
+// everything outside its map (and behind it) unlit; a directional map's outside reads as lit (border depth 1).
+template <class Filter, bool kPcfTaps>
+float classic_visibility(const ClassicReader& r, glm::vec3 p, glm::vec3 n, glm::vec2 frag) {
+  SampleContext ctx;
+  if (!classic_context(r, p, n, frag, ctx)) return 0.0f;
   return Filter{}(Taps<kPcfTaps>{&r.maps}, ctx, r.filter);
 }
 
@@ -96,6 +107,26 @@ inline void classic_visibility(const ClassicReader& r, std::span<const ShadowQue
   dispatch_filter(r.filter_kind, r.filter.pcf_taps, [&]<class F, bool kPcf>() {
     for (size_t i = 0; i < q.size(); ++i) vis[i] = classic_visibility<F, kPcf>(r, q[i].p, q[i].n, q[i].frag);
   });
+}
+
+// The same for up to eight points (a quad pair), bit-identical per point: each point's context as above, then
+// every tap of the filter one eight-lane lookup over the points that need one (shadow_filters_x8.h).
+inline void classic_visibility_x8(const ClassicReader& r, std::span<const ShadowQuery> q, std::span<float> vis) {
+  SampleLanes b;
+  std::array<size_t, 8> point_of;
+  for (size_t i = 0; i < q.size(); ++i) {
+    if (!classic_context(r, q[i].p, q[i].n, q[i].frag, b.ctx[size_t(b.count)])) {
+      vis[i] = 0.0f;
+      continue;
+    }
+    point_of[size_t(b.count++)] = i;
+  }
+  if (b.count == 0) return;
+  b.finish();
+  alignas(32) float out[8];
+  dispatch_filter(r.filter_kind, r.filter.pcf_taps,
+                  [&]<class F, bool kPcf>() { filter_lanes<F, kPcf>(r.maps, b, r.filter).store(out); });
+  for (int l = 0; l < b.count; ++l) vis[point_of[size_t(l)]] = out[l];
 }
 
 }  // namespace shading::tech

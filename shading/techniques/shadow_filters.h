@@ -2,6 +2,7 @@
 // or one hardware 2×2 PCF lookup per tap) and a SampleContext (map coordinates, reference depth, pixel and
 // world position) and returns the visibility in [0, 1]. The run-time choice (dispatch_filter) is made once per
 // batch of points, e.g. per light and 2×2 quad, so each light of a frame can keep its own filter.
+// filter_lanes (shadow_filters_x8.h) runs these filters over eight points at once.
 #pragma once
 #include <cstdint>
 
@@ -72,25 +73,35 @@ struct PcfFilter {
 
 enum class PoissonMode : uint8_t { fixed, stratified, rotated };
 
+// The seed of stratified and rotated sampling at a point: its pixel, or its world position rounded to 1 mm.
+inline uint32_t poisson_seed(const SampleContext& c, const FilterParams& p) {
+  return p.stratify_world ? world_seed(c.world) : pixel_seed(c.frag);
+}
+
+// The disc point of tap i, before the spread: stratified picks a hashed index, rotated turns the disc by rot.
+template <PoissonMode kMode>
+glm::vec2 poisson_offset(uint32_t seed, glm::vec2 rot, int i) {
+  glm::vec2 d;
+  if constexpr (kMode == PoissonMode::stratified) d = kPoissonDisk[size_t(stratified_index(seed, i))];
+  else d = kPoissonDisk[size_t(i)];
+  if constexpr (kMode == PoissonMode::rotated) d = glm::vec2(rot.x * d.x - rot.y * d.y, rot.y * d.x + rot.x * d.y);
+  return d;
+}
+
 // Poisson disc of `taps` points (4 or 16) scaled by `spread`: fixed (banding), stratified (each tap's disc index
 // hashed per pixel or world point), rotated (the disc turned per pixel). Visibility = mean of the taps.
-template <PoissonMode kMode>
+template <PoissonMode kModeArg>
 struct PoissonFilter {
+  static constexpr PoissonMode kMode = kModeArg;
   template <class T>
   float operator()(const T& taps, const SampleContext& c, const FilterParams& p) const {
     const int n = p.taps >= 16 ? 16 : 4;
     uint32_t seed = 0;
-    if constexpr (kMode != PoissonMode::fixed) seed = p.stratify_world ? world_seed(c.world) : pixel_seed(c.frag);
+    if constexpr (kMode != PoissonMode::fixed) seed = poisson_seed(c, p);
     glm::vec2 rot(1.0f, 0.0f);
     if constexpr (kMode == PoissonMode::rotated) rot = rotation_of(seed);
     float sum = 0.0f;
-    for (int i = 0; i < n; ++i) {
-      glm::vec2 d;
-      if constexpr (kMode == PoissonMode::stratified) d = kPoissonDisk[size_t(stratified_index(seed, i))];
-      else d = kPoissonDisk[size_t(i)];
-      if constexpr (kMode == PoissonMode::rotated) d = glm::vec2(rot.x * d.x - rot.y * d.y, rot.y * d.x + rot.x * d.y);
-      sum += taps(c, d * p.spread);
-    }
+    for (int i = 0; i < n; ++i) sum += taps(c, poisson_offset<kMode>(seed, rot, i) * p.spread);
     return sum / float(n);
   }
 };

@@ -10,6 +10,7 @@ endif()
 if(TARGET shadowlab::frame)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/frame/builtin_render_test.cpp
        ${CMAKE_CURRENT_LIST_DIR}/frame/frame_lights_test.cpp
+       ${CMAKE_CURRENT_LIST_DIR}/frame/camera_pair_test.cpp
        ${CMAKE_CURRENT_LIST_DIR}/frame/projective_frame_test.cpp)
   list(APPEND SHADOWLAB_TEST_LIBS shadowlab::frame)
 endif()

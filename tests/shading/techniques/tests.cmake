@@ -2,6 +2,7 @@
 # slope bias), golden-image hashes of the tutorial steps at several thread counts, and the bias measurements.
 list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/classic_analytic_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/classic_x8_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/frustum_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/golden_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/bias_measure_test.cpp

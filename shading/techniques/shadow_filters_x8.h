@@ -1,0 +1,115 @@
+// The filters of shadow_filters.h over up to eight points at once (a fragment_pair's live lanes): every tap is
+// one eight-lane lookup through a kernel of ShadowLookup2D::visit (PcfKernel or GenericShadowKernel), summed per
+// lane in the scalar filter's order with the same float operations, so lane l equals the scalar filter on
+// point l bit for bit. Per-lane tap offsets (stratified, rotated) are computed per lane by the scalar code.
+#pragma once
+#include <array>
+#include <type_traits>
+
+#include "raster/simd/vec.h"
+#include "shading/shadow_lookup.h"
+#include "shading/techniques/shadow_filters.h"
+
+namespace shading::tech {
+
+// Up to eight sample contexts, also as lanes (s, t, ref). Lanes past `count` repeat lane 0: they are looked up
+// and their results ignored.
+struct SampleLanes {
+  std::array<SampleContext, 8> ctx;
+  int count = 0;
+  raster::simd::VecF32 s, t, ref;
+
+  // Pads the unused lanes and builds the coordinate lanes; call once after the contexts are filled.
+  void finish() {
+    alignas(32) float ps[8], pt[8], pr[8];
+    for (int l = 0; l < 8; ++l) {
+      if (l >= count) ctx[size_t(l)] = ctx[0];
+      ps[l] = ctx[size_t(l)].st.x, pt[l] = ctx[size_t(l)].st.y, pr[l] = ctx[size_t(l)].ref;
+    }
+    s = raster::simd::VecF32::load(ps), t = raster::simd::VecF32::load(pt), ref = raster::simd::VecF32::load(pr);
+  }
+};
+
+namespace lanes_detail {
+using raster::simd::VecF32;
+
+// One tap per lane at (s + ox, t + oy, ref): Taps' `c.st + offset` as a lane add.
+template <class K>
+VecF32 tap(const K& k, const SampleLanes& b, VecF32 ox, VecF32 oy) {
+  return k(b.s + ox, b.t + oy, b.ref);
+}
+// The same offset for every lane: the scalar `d * spread` splatted.
+template <class K>
+VecF32 tap(const K& k, const SampleLanes& b, glm::vec2 off) {
+  return tap(k, b, VecF32::splat(off.x), VecF32::splat(off.y));
+}
+
+template <PoissonMode kMode, class K>
+VecF32 poisson(const K& k, const SampleLanes& b, const FilterParams& p, int n) {
+  std::array<uint32_t, 8> seed{};
+  std::array<glm::vec2, 8> rot;
+  rot.fill(glm::vec2(1.0f, 0.0f));
+  if constexpr (kMode != PoissonMode::fixed)
+    for (size_t l = 0; l < 8; ++l) {
+      seed[l] = poisson_seed(b.ctx[l], p);
+      if constexpr (kMode == PoissonMode::rotated) rot[l] = rotation_of(seed[l]);
+    }
+  VecF32 sum = VecF32::splat(0.0f);
+  for (int i = 0; i < n; ++i) {
+    if constexpr (kMode == PoissonMode::fixed) {
+      sum = sum + tap(k, b, poisson_offset<kMode>(0u, rot[0], i) * p.spread);
+    } else {
+      alignas(32) float ox[8], oy[8];
+      for (size_t l = 0; l < 8; ++l) {
+        const glm::vec2 off = poisson_offset<kMode>(seed[l], rot[l], i) * p.spread;
+        ox[l] = off.x, oy[l] = off.y;
+      }
+      sum = sum + tap(k, b, VecF32::load(ox), VecF32::load(oy));
+    }
+  }
+  return raster::simd::div(sum, VecF32::splat(float(n)));
+}
+}  // namespace lanes_detail
+
+// The batch form of Filter (one of shadow_filters.h's) with kernel k: lane l is Filter on b.ctx[l].
+template <class Filter, class K>
+raster::simd::VecF32 filter_lanes(const K& k, const SampleLanes& b, const FilterParams& p) {
+  using lanes_detail::tap;
+  using raster::simd::VecF32;
+  if constexpr (std::is_same_v<Filter, HardFilter> || std::is_same_v<Filter, PcfFilter>) {
+    return tap(k, b, glm::vec2(0.0f));
+  } else if constexpr (std::is_same_v<Filter, EarlyBailFilter>) {
+    VecF32 outer = VecF32::splat(0.0f);
+    for (int i : kOuterTaps) outer = outer + tap(k, b, kPoissonDisk[size_t(i)] * p.spread);
+    alignas(32) float o[8];
+    outer.store(o);
+    bool full = false;  // some lane whose outer taps disagree
+    for (int l = 0; l < b.count; ++l) full |= !(o[l] == 0.0f || o[l] == 4.0f);
+    const VecF32 bail = outer * VecF32::splat(0.25f);
+    if (!full) return bail;
+    VecF32 sum = VecF32::splat(0.0f);
+    for (const glm::vec2& d : kPoissonDisk) sum = sum + tap(k, b, d * p.spread);
+    const VecF32 all = raster::simd::div(sum, VecF32::splat(16.0f));
+    alignas(32) float r[8], a[8];
+    bail.store(r), all.store(a);
+    for (int l = 0; l < 8; ++l)
+      if (!(o[l] == 0.0f || o[l] == 4.0f)) r[l] = a[l];
+    return VecF32::load(r);
+  } else {
+    return lanes_detail::poisson<Filter::kMode>(k, b, p, p.taps >= 16 ? 16 : 4);
+  }
+}
+
+// filter_lanes with the lookup the scalar filter would use (Taps<kPcf>; PcfFilter always the LINEAR one), its
+// path chosen once here: the kernel of the LINEAR lookup's path, or the generic lookups for NEAREST.
+template <class Filter, bool kPcf>
+raster::simd::VecF32 filter_lanes(const MapLookups& maps, const SampleLanes& b, const FilterParams& p) {
+  if constexpr (kPcf || std::is_same_v<Filter, PcfFilter>) {
+    return maps.linear.visit([&](const auto& k) { return filter_lanes<Filter>(k, b, p); });
+  } else {
+    const GenericShadowKernel k{&maps.nearest.texture(), maps.nearest.sampler()};
+    return filter_lanes<Filter>(k, b, p);
+  }
+}
+
+}  // namespace shading::tech
