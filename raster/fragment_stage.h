@@ -154,9 +154,9 @@ struct ShadedStage {
 
   void pair_block(const TriangleSetup& t, int32_t bx, int32_t by, uint64_t mask) const {
     using simd::VecF32;
-    alignas(32) static constexpr float kLaneX[8] = {0, 1, 2, 3, 0, 1, 2, 3}, kLaneY[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+    alignas(32) static constexpr float kLaneX[8] = {0, 1, 2, 3, 0, 1, 2, 3};
     const PairInterp<V> interp(interps[t.prim & ~kBackFacingBit]);
-    const VecF32 half = VecF32::splat(0.5f), dzdy = VecF32::splat(t.dzdy), z_offset = VecF32::splat(t.z_offset);
+    const VecF32 half = VecF32::splat(0.5f);
     const bool packed = packed_color();
     PairColumn cols[2];
     for (int h = 0; h < 2; ++h) {
@@ -164,8 +164,19 @@ struct ShadedStage {
       cols[h].zcol = simd::fma(VecF32::splat(t.dzdx), cols[h].x, VecF32::splat(t.z_a0));
       cols[h].interp = interp.columns(cols[h].x + half);
     }
+    // A fully covered block (the inside of large triangles) runs with its coverage known at compile time.
+    if (mask == ~uint64_t(0)) pair_rows<true>(t, interp, cols, bx, by, mask, packed);
+    else pair_rows<false>(t, interp, cols, bx, by, mask, packed);
+  }
+
+  template <bool kFull>
+  [[gnu::always_inline]] void pair_rows(const TriangleSetup& t, const PairInterp<V>& interp, const PairColumn* cols,
+                                        int32_t bx, int32_t by, uint64_t mask, bool packed) const {
+    using simd::VecF32;
+    alignas(32) static constexpr float kLaneY[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+    const VecF32 half = VecF32::splat(0.5f), dzdy = VecF32::splat(t.dzdy), z_offset = VecF32::splat(t.z_offset);
     for (int p = 0; p < 4; ++p) {
-      const unsigned rows = unsigned(mask >> (16 * p)) & 0xFFFFu;
+      const unsigned rows = kFull ? 0xFFFFu : unsigned(mask >> (16 * p)) & 0xFFFFu;
       if (!rows) continue;
       const int32_t y = by + 2 * p;
       PairRow row;
@@ -176,7 +187,7 @@ struct ShadedStage {
       row.c0 = packed ? reinterpret_cast<uint32_t*>(color->row8(y)) + bx : nullptr;
       row.c1 = packed ? reinterpret_cast<uint32_t*>(color->row8(y + 1)) + bx : nullptr;
       for (int h = 0; h < 2; ++h) {
-        const unsigned live = ((rows >> (4 * h)) & 0xFu) | (((rows >> (8 + 4 * h)) & 0xFu) << 4);
+        const unsigned live = kFull ? 0xFFu : ((rows >> (4 * h)) & 0xFu) | (((rows >> (8 + 4 * h)) & 0xFu) << 4);
         if (!live) continue;
         // plane_depth's operations: fma(dzdy, y, fma(dzdx, x, z_a0)) + z_offset, clamped.
         const VecF32 z = clamp01(simd::fma(dzdy, row.y, cols[h].zcol) + z_offset);
