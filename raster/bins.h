@@ -1,6 +1,8 @@
 // Binning: the triangles set up by one chunk of a draw, sorted by the tiles they touch. Each tile's slice of a
-// chunk is a contiguous array of TriangleSetup copies (bins carry the data, not indices), in submission order;
-// tile execution walks the chunks in order, so primitive order is kept whatever thread made which chunk.
+// chunk is a contiguous array of record copies (bins carry the data, not indices: tile execution then reads
+// each tile's slices, and the tiles in order, as streams), in submission order; tile execution walks the chunks
+// in order, so primitive order is kept whatever thread made which chunk. Records are TriangleSetup for shaded
+// draws and the one-cache-line DepthSetup for depth-only draws (renderer.h).
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -19,9 +21,10 @@ struct TileGrid {
   }
 };
 
+template <class Record>
 struct ChunkBins {
-  std::vector<TriangleSetup> setups;   // in submission order, as set up
-  std::vector<TriangleSetup> binned;   // copies grouped by tile
+  std::vector<Record> setups;   // in submission order, as set up
+  std::vector<Record> binned;   // copies grouped by tile
   std::vector<uint32_t> offsets;       // tile k's commands: binned[offsets[k] .. offsets[k + 1])
 
   // Starts a draw: no setups, every tile's count at zero.
@@ -32,7 +35,7 @@ struct ChunkBins {
 
   // Appends a set-up triangle and counts it in every tile its box touches.
   // Most triangles of a detailed mesh lie in one tile: those are counted without the loops of for_each_tile.
-  [[gnu::always_inline]] void add(const TriangleSetup& t, const TileGrid& grid) {
+  [[gnu::always_inline]] void add(const Record& t, const TileGrid& grid) {
     setups.push_back(t);
     const int k = single_tile(t, grid);
     if (k >= 0) ++offsets[size_t(k) + 1];
@@ -46,7 +49,7 @@ struct ChunkBins {
     binned.resize(offsets.back());
     std::vector<uint32_t>& cursor = scratch_;
     cursor.assign(offsets.begin(), offsets.end() - 1);
-    for (const TriangleSetup& t : setups) {
+    for (const Record& t : setups) {
       const int k = single_tile(t, grid);
       if (k >= 0) binned[cursor[size_t(k)]++] = t;
       else for_each_tile(t, grid, [&](int j) { binned[cursor[size_t(j)]++] = t; });
@@ -54,14 +57,14 @@ struct ChunkBins {
   }
 
   // The tile holding the triangle's whole box, or -1 when the box spans several.
-  static int single_tile(const TriangleSetup& t, const TileGrid& grid) {
+  static int single_tile(const Record& t, const TileGrid& grid) {
     const int tx = t.min_x >> kTileSizeLog2, ty = t.min_y >> kTileSizeLog2;
     const bool one = ((t.max_x >> kTileSizeLog2) == tx) & ((t.max_y >> kTileSizeLog2) == ty);
     return one ? ty * grid.tiles_x + tx : -1;
   }
 
   template <class F>
-  static void for_each_tile(const TriangleSetup& t, const TileGrid& grid, F&& f) {
+  static void for_each_tile(const Record& t, const TileGrid& grid, F&& f) {
     const int tx0 = t.min_x >> kTileSizeLog2, tx1 = t.max_x >> kTileSizeLog2;
     const int ty0 = t.min_y >> kTileSizeLog2, ty1 = t.max_y >> kTileSizeLog2;
     for (int ty = ty0; ty <= ty1; ++ty)

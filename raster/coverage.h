@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstdint>
 
+#include "raster/depth_setup.h"
 #include "raster/limits.h"
 #include "raster/primitive.h"
 #include "raster/simd/vec.h"
@@ -15,12 +16,23 @@ namespace raster {
 // Lanes [lo, hi] of an 8-lane row.
 inline unsigned lane_range_mask(int lo, int hi) { return ((2u << hi) - 1u) & ~((1u << lo) - 1u); }
 
+// Edge k's F(x, y) = a·x + b·y − t at pixel (x, y), exact in int64 (limits.h); edge_value_narrow() gives the same
+// modulo 2^32, which is the value itself where it fits int32 (narrow triangles near their box, limits.h).
+// DepthSetup has the same pair (depth_setup.h): the row stage below works on either record.
+inline int64_t edge_value(const TriangleSetup& t, int k, int64_t x, int64_t y) {
+  return t.a[k] * x + t.b[k] * y - t.t[k];
+}
+inline int32_t edge_value_narrow(const TriangleSetup& t, int k, int32_t x, int32_t y) {
+  return int32_t(uint32_t(t.a[k]) * uint32_t(x) + uint32_t(t.b[k]) * uint32_t(y) - uint32_t(t.t[k]));
+}
+
 // Per-row edge values of the (up to three) edges that cross a region, stepped one row at a time.
 struct EdgeRows {
   simd::VecI32 f[3], step[3];
 
   // Edges with crosses[k] false contribute nothing (they are known to be non-negative everywhere).
-  EdgeRows(const TriangleSetup& t, const int64_t* f_start, const bool* crosses) {
+  template <class Tri>
+  EdgeRows(const Tri& t, const int64_t* f_start, const bool* crosses) {
     using simd::VecI32;
     for (int k = 0; k < 3; ++k) {
       f[k] = crosses[k] ? VecI32::splat(int32_t(f_start[k])) + VecI32::splat(t.a[k]) * VecI32::iota()
@@ -43,16 +55,15 @@ inline bool is_narrow(const TriangleSetup& t) { return t.flags & kNarrowEdges; }
 // is stepped from block to block (g = F at the block's corner where F is largest, so the block lies outside the
 // edge when g < 0 and the edge crosses it when g < its range over the block); blocks inside every edge are
 // handed over row by row without per-pixel edge tests.
-template <class Stage>
-inline void rasterize_blocks(const TriangleSetup& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
-                             const Stage& stage) {
+template <class Tri, class Stage>
+inline void rasterize_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const Stage& stage) {
   constexpr int64_t kSpan = kBlockSize - 1;
   const int32_t bx0 = x0 & ~(kBlockSize - 1), by0 = y0 & ~(kBlockSize - 1);
   int64_t g_row[3], range[3], to_start[3], step_x[3], step_y[3];
   for (int k = 0; k < 3; ++k) {
     const int64_t a = t.a[k], b = t.b[k];
     const int64_t hi = (std::max<int64_t>(a, 0) + std::max<int64_t>(b, 0)) * kSpan;
-    g_row[k] = a * bx0 + b * by0 - t.t[k] + hi;
+    g_row[k] = edge_value(t, k, bx0, by0) + hi;
     range[k] = (std::abs(a) + std::abs(b)) * kSpan;
     to_start[k] = -hi;  // g + to_start: F at the block's first pixel
     step_x[k] = a * kBlockSize;
@@ -149,12 +160,13 @@ inline void rasterize_block_masks(const TriangleSetup& t, int32_t x0, int32_t y0
 // BlockMax&), and hiz_plane /
 // block_hidden / block_done around each block (hierarchical depth), and gets one 8-lane segment per row; narrow
 // triangles (at most 8 pixels wide within `r`) take one segment placed inside the tile, others go through 8×8
-// blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks.
-template <class Stage>
-inline void rasterize(const TriangleSetup& t, const PixelRect& r, const Stage& stage) {
+// blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks. A row stage takes
+// either record (TriangleSetup or DepthSetup), a block stage a TriangleSetup.
+template <class Tri, class Stage>
+inline void rasterize(const Tri& t, const PixelRect& r, const Stage& stage) {
   constexpr bool kRowStage = requires { stage.columns(t, 0); };
-  const int32_t x0 = std::max(t.min_x, r.x0), x1 = std::min(t.max_x, r.x1);
-  const int32_t y0 = std::max(t.min_y, r.y0), y1 = std::min(t.max_y, r.y1);
+  const int32_t x0 = std::max<int32_t>(t.min_x, r.x0), x1 = std::min<int32_t>(t.max_x, r.x1);
+  const int32_t y0 = std::max<int32_t>(t.min_y, r.y0), y1 = std::min<int32_t>(t.max_y, r.y1);
   if (x0 > x1 || y0 > y1) return;
   if constexpr (kRowStage) {
     if (x1 - x0 < kBlockSize && is_narrow(t)) {
@@ -163,7 +175,7 @@ inline void rasterize(const TriangleSetup& t, const PixelRect& r, const Stage& s
       int64_t f_start[3];
       const bool crosses[3] = {true, true, true};
       for (int k = 0; k < 3; ++k)  // exact modulo 2^32, and the value fits int32 (limits.h, kNarrowCoefBits)
-        f_start[k] = int32_t(uint32_t(t.a[k]) * uint32_t(xs) + uint32_t(t.b[k]) * uint32_t(y0) - uint32_t(t.t[k]));
+        f_start[k] = edge_value_narrow(t, k, xs, y0);
       EdgeRows edges(t, f_start, crosses);
       const auto cols = stage.columns(t, xs);
       typename Stage::BlockMax unused;

@@ -15,7 +15,8 @@ namespace raster {
 // that a triangle gets the same depth whichever path draws it. llvmpipe's operation order (setup.cpp): with x and
 // y the absolute pixel indices as floats, z = fma(dzdy, y, fma(dzdx, x, z_a0)) + z_offset, then the clamp. The
 // column part (first fused multiply-add) is computed once per segment, the rest per row.
-inline simd::VecF32 plane_depth_columns(const TriangleSetup& t, int32_t bx) {
+template <class Tri>  // TriangleSetup or DepthSetup
+inline simd::VecF32 plane_depth_columns(const Tri& t, int32_t bx) {
   using simd::VecF32;
   const VecF32 x = VecF32::splat(float(bx)) + VecF32::iota();  // exact: pixel indices are below 2^24
   return simd::fma(VecF32::splat(t.dzdx), x, VecF32::splat(t.z_a0));
@@ -58,7 +59,8 @@ struct DepthOnlyStage {
   };
 
   // The per-triangle part of the hierarchical test (see hiz.h), for blocks inside `r`.
-  HiZPlane hiz_plane(const TriangleSetup& t, const PixelRect& r) const {
+  template <class Tri>
+  HiZPlane hiz_plane(const Tri& t, const PixelRect& r) const {
     if constexpr (kHiZ) return make_hiz_plane(t, r);
     return {};
   }
@@ -77,7 +79,8 @@ struct DepthOnlyStage {
   }
 
   // The column part of the depth plane for the segment starting at x, computed once per segment.
-  Columns columns(const TriangleSetup& t, int32_t x) const {
+  template <class Tri>
+  Columns columns(const Tri& t, int32_t x) const {
     return {plane_depth_columns(t, x), simd::VecF32::splat(t.dzdy), simd::VecF32::splat(t.z_offset)};
   }
 

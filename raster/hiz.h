@@ -62,7 +62,8 @@ struct HiZPlane {
   }
 };
 
-inline HiZPlane make_hiz_plane(const TriangleSetup& t, const PixelRect& r) {
+template <class Tri>  // TriangleSetup or DepthSetup
+inline HiZPlane make_hiz_plane(const Tri& t, const PixelRect& r) {
   const double cx = t.dzdx > 0 ? 0.0 : double(kBlockSize - 1);
   const double cy = t.dzdy > 0 ? 0.0 : double(kBlockSize - 1);
   const double scale = std::abs(double(t.z_a0)) + std::abs(double(t.dzdx)) * (double(r.x1) + kBlockSize) +

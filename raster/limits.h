@@ -57,10 +57,20 @@ static_assert(2 * kMaxBlockOffset < (int64_t(1) << 31), "per-pixel edge values m
 inline constexpr int kNarrowCoefBits = 17;
 static_assert(2 * (int64_t(1) << kNarrowCoefBits) * ((int64_t(1) << (kNarrowCoefBits - kSubpixelBits)) + kBlockSize) <
               (int64_t(1) << 31));
+// The compact record of depth-only draws (primitive.h, DepthSetup) stores a narrow triangle's edge constants
+// as F0 = A·min_x + B·min_y − T, the edge at the box's first pixel, in int32. That pixel's centre lies within
+// the triangle's snapped extent (the box holds the pixel centres between the snapped extremes, clamped to the
+// draw's rectangle, which only moves it inward), and that extent is at most the largest |B| along x and the
+// largest |A| along y, below 2^kNarrowCoefBits; so E = A·(cx − X_a) + B·(cy − Y_a) satisfies |E| < 2 · 2^34 and
+// F0 = floor((E − bias) / 256) (see setup_batch.h) satisfies |F0| < 2^27 + 1. T is recovered exactly, in int64.
+static_assert(2 * (int64_t(1) << (2 * kNarrowCoefBits)) / kSubpixelScale + 1 < (int64_t(1) << 31),
+              "F0 of a narrow edge fits int32");
+// Its box is stored as int16: boxes of visible triangles lie in the target, within [0, kMaxTargetSize − 1].
+static_assert(kMaxTargetSize - 1 <= std::numeric_limits<int16_t>::max());
 // The viewport origin and size are bounded so that pixel indices and tile counts fit comfortably.
 static_assert(kMaxTargetSize <= kGuardBand / 2);
 static_assert(kMaxTargetSize % kTileSize == 0 && kTileSize % kBlockSize == 0);
-// Bounding boxes are stored as int32 pixel indices; tile indices as uint16.
+// Bounding boxes are stored as int32 pixel indices (int16 in DepthSetup, asserted above); tile indices as uint16.
 static_assert(kMaxTargetSize / kTileSize <= 65535);
 
 }  // namespace raster

@@ -8,17 +8,18 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "raster/bins.h"
 #include "raster/clip.h"
 #include "raster/coverage.h"
+#include "raster/depth_setup.h"
 #include "raster/depth_stage.h"
 #include "raster/draw_stats.h"
 #include "raster/fragment_stage.h"
 #include "raster/hiz.h"
 #include "raster/interpolation.h"
-#include "raster/outcode.h"
 #include "raster/scratch.h"
 #include "raster/setup.h"
 #include "raster/setup_batch.h"
@@ -26,6 +27,7 @@
 #include "raster/state.h"
 #include "raster/target.h"
 #include "raster/thread_pool.h"
+#include "raster/vertex_batch.h"
 
 namespace raster {
 
@@ -57,8 +59,15 @@ class Renderer {
  private:
   // The front end's output for one chunk of consecutive triangles.
   struct Chunk {
-    ChunkBins bins;
+    // The visible triangles, binned: TriangleSetup for shaded draws, DepthSetup for depth-only draws (whose
+    // triangles too wide for it keep their TriangleSetup in `full`).
+    ChunkBins<TriangleSetup> bins;
+    ChunkBins<DepthSetup> depth_bins;
+    ScratchBuffer full;
+    size_t full_count = 0;
     ScratchBuffer interps;  // TriangleInterp<Varyings>, shaded draws only
+    ScratchBuffer codes, win;  // depth-only draws: the outcodes and window vertices of the chunk's vertex range
+    bool pending = true;       // the front end has still to run, with the draw's vertices
     size_t interp_count = 0;
     DrawStats stats;
   };
@@ -72,6 +81,7 @@ namespace detail {
 
 inline constexpr size_t kVertexBatch = 8192;
 inline constexpr size_t kChunkTriangles = 8192;
+inline constexpr size_t kChunkVertices = 3 * kChunkTriangles;  // the largest vertex range a chunk shades itself
 inline constexpr unsigned kInvalidVertex = 1u << 31;
 
 void check_draw(const RenderTargets& t, const DrawState& s, size_t vertices, size_t indices);
@@ -84,6 +94,11 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   using V = typename Shader::Varyings;
   using CV = ClipVertex<V>;
   constexpr bool kShaded = HasFragmentStage<Shader>;
+  using Record = std::conditional_t<kShaded, TriangleSetup, DepthSetup>;  // what bins carry (see Chunk)
+  auto bins_of = [](auto& ch) -> auto& {
+    if constexpr (kShaded) return ch.bins;
+    else return ch.depth_bins;
+  };
 
   detail::check_draw(targets, state_in, vertices.size(), indices.size());
   const DrawState state = state_in;  // snapshot
@@ -98,61 +113,95 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   const size_t ntri = indices.empty() ? nv / 3 : indices.size() / 3;
   if (ntri == 0 || sp.clip.empty()) return DrawStats{.triangles = ntri, .rejected = ntri};
 
-  // ---- Vertex stage: the shader once per vertex, then outcodes and (for unclipped vertices) window space.
+  // ---- Vertex stage: the shader per vertex (shader.h: a pure function), then outcodes and window space.
+  // The shader runs one vertex at a time; the clip test and viewport transform eight at a time (vertex_batch.h).
+  // Depth-only draws keep no clip-space vertices: the few triangles that need clipping run the shader again
+  // on their vertices (a const function of the vertex and the snapshot), which saves writing them all.
+  // shade_vertices(begin, end, codes, win) fills codes[i − begin] and win[i − begin] for vertices [begin, end).
   CV* post = post_.get<CV>(nv);
-  WindowVertex* win = win_.get<WindowVertex>(nv);
-  unsigned* codes = codes_.get<unsigned>(nv);
-  const OutcodeTester outcode_of(planes);
-  pool_.parallel_for((nv + detail::kVertexBatch - 1) / detail::kVertexBatch, [&](size_t b) {
-    const size_t end = std::min(nv, (b + 1) * detail::kVertexBatch);
-    for (size_t i = b * detail::kVertexBatch; i < end; ++i) {
-      CV& cv = post[i];
-      cv.pos = shader.vertex(vertices[i], cv.var);
-      const glm::vec4& p = cv.pos;
-      const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
-      codes[i] = finite ? outcode_of(p) : detail::kInvalidVertex;
-      if (codes[i] == 0) win[i] = to_window(p, sp);
+  const VertexBatch fixed_function(planes, sp, detail::kInvalidVertex);
+  auto shade_vertices = [&](size_t begin, size_t end, unsigned* codes, WindowVertex* win) {
+    for (size_t i0 = begin; i0 < end; i0 += 8) {
+      const int n = int(std::min<size_t>(8, end - i0));
+      alignas(32) float x[8], y[8], z[8], w[8];
+      for (int l = 0; l < 8; ++l) {
+        const size_t i = i0 + size_t(l < n ? l : 0);  // lanes past the end repeat the first
+        glm::vec4 p;
+        if constexpr (kShaded) {
+          CV& cv = post[i];
+          if (l < n) cv.pos = shader.vertex(vertices[i], cv.var);
+          p = cv.pos;
+        } else {
+          V unused;
+          p = shader.vertex(vertices[i], unused);
+        }
+        x[l] = p.x, y[l] = p.y, z[l] = p.z, w[l] = p.w;
+      }
+      fixed_function.run(x, y, z, w, n, codes + (i0 - begin), win + (i0 - begin));
     }
-  });
+  };
+  WindowVertex* all_win = nullptr;
+  unsigned* all_codes = nullptr;
+  auto shade_all_vertices = [&] {
+    all_win = win_.get<WindowVertex>(nv);
+    all_codes = codes_.get<unsigned>(nv);
+    pool_.parallel_for((nv + detail::kVertexBatch - 1) / detail::kVertexBatch, [&](size_t b) {
+      const size_t begin = b * detail::kVertexBatch, end = std::min(nv, begin + detail::kVertexBatch);
+      shade_vertices(begin, end, all_codes + begin, all_win + begin);
+    });
+  };
 
   // ---- Front end: assembly, clipping, setup, binning, in chunks of consecutive triangles.
   const TileGrid grid = TileGrid::for_size(width, height);
   const size_t nchunks = (ntri + detail::kChunkTriangles - 1) / detail::kChunkTriangles;
   while (chunks_.size() < nchunks) chunks_.push_back(std::make_unique<Chunk>());
-  pool_.parallel_for(nchunks, [&](size_t c) {
+  // One chunk's front end, reading vertex i's outcode and window position at codes[i − base], win[i − base].
+  auto front = [&](size_t c, const unsigned* codes, const WindowVertex* win, uint32_t base) {
     Chunk& ch = *chunks_[c];
-    ch.bins.reset(grid);
+    ChunkBins<Record>& bins = bins_of(ch);
+    bins.reset(grid);
+    ch.full_count = 0;
     ch.interp_count = 0;
     ch.stats = DrawStats{};
     const size_t end = std::min(ntri, (c + 1) * detail::kChunkTriangles);
-    ch.bins.setups.reserve(end - c * detail::kChunkTriangles);
+    bins.setups.reserve(end - c * detail::kChunkTriangles);
+    // Bins a visible triangle's record: setup_triangle()'s, or a DepthSetup from the batch.
+    auto keep = [&](const auto& t) {
+      ++ch.stats.setups;
+      if constexpr (std::is_same_v<std::decay_t<decltype(t)>, Record>) {
+        bins.add(t, grid);
+      } else if constexpr (!kShaded) {  // a depth-only draw's triangle set up by setup_triangle()
+        DepthSetup d = pack_depth_setup(t);  // the box is right in any case; the edges only when it fits
+        if (!fits_depth_setup(t)) {
+          d.full = uint32_t(ch.full_count);
+          ch.full_count = ch.full.append(ch.full_count, t);
+        }
+        bins.add(d, grid);
+      }
+    };
+    auto count = [&](SetupResult r) {
+      switch (r) {
+        case SetupResult::visible: return true;
+        case SetupResult::culled: ++ch.stats.culled; break;
+        case SetupResult::degenerate: ++ch.stats.degenerate; break;
+        case SetupResult::outside: ++ch.stats.rejected; break;
+      }
+      return false;
+    };
     auto emit = [&](const WindowVertex* w[3], const V* var[3]) {
       TriangleSetup t;
-      switch (setup_triangle(*w[0], *w[1], *w[2], sp, t)) {
-        case SetupResult::visible: break;
-        case SetupResult::culled: ++ch.stats.culled; return;
-        case SetupResult::degenerate: ++ch.stats.degenerate; return;
-        case SetupResult::outside: ++ch.stats.rejected; return;
-      }
+      if (!count(setup_triangle(*w[0], *w[1], *w[2], sp, t))) return;
       if constexpr (kShaded) {
         t.prim |= uint32_t(ch.interp_count);
         ch.interp_count = ch.interps.append(ch.interp_count, make_interp<V>(w, var));
       }
-      ++ch.stats.setups;
-      ch.bins.add(t, grid);
+      keep(t);
     };
     // Depth-only draws set up their unclipped triangles eight at a time (setup_batch.h), in the same order.
     const bool batched = !kShaded && nv <= kBatchMaxVertices;
     SetupBatch batch(sp, win);
-    auto take = [&](SetupResult r, const TriangleSetup& t) {
-      switch (r) {
-        case SetupResult::visible: break;
-        case SetupResult::culled: ++ch.stats.culled; return;
-        case SetupResult::degenerate: ++ch.stats.degenerate; return;
-        case SetupResult::outside: ++ch.stats.rejected; return;
-      }
-      ++ch.stats.setups;
-      ch.bins.add(t, grid);
+    auto take = [&](SetupResult r, const auto& t) {
+      if (count(r)) keep(t);
     };
     for (size_t i = c * detail::kChunkTriangles; i < end; ++i) {
       uint32_t idx[3];
@@ -163,17 +212,17 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
                           " is out of range (" + std::to_string(nv) + " vertices)");
       }
       ++ch.stats.triangles;
-      const unsigned c0 = codes[idx[0]], c1 = codes[idx[1]], c2 = codes[idx[2]];
+      const unsigned c0 = codes[idx[0] - base], c1 = codes[idx[1] - base], c2 = codes[idx[2] - base];
       if ((c0 & c1 & c2) != 0 || ((c0 | c1 | c2) & detail::kInvalidVertex)) {
         ++ch.stats.rejected;
         continue;
       }
       if ((c0 | c1 | c2) == 0) {
         if (batched) {
-          batch.push(idx[0], idx[1], idx[2], take);
+          batch.push(idx[0] - base, idx[1] - base, idx[2] - base, take);
           continue;
         }
-        const WindowVertex* w[3] = {&win[idx[0]], &win[idx[1]], &win[idx[2]]};
+        const WindowVertex* w[3] = {&win[idx[0] - base], &win[idx[1] - base], &win[idx[2] - base]};
         const V* var[3] = {&post[idx[0]].var, &post[idx[1]].var, &post[idx[2]].var};
         emit(w, var);
         continue;
@@ -182,7 +231,12 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       ++ch.stats.clipped;
       std::array<CV, 12> poly;
       std::array<WindowVertex, 12> pw;
-      const int n = clip_to_window(planes, c0 | c1 | c2, sp, poly, pw, post[idx[0]], post[idx[1]], post[idx[2]]);
+      CV in[3];
+      for (int k = 0; k < 3; ++k) {
+        if constexpr (kShaded) in[k] = post[idx[k]];
+        else in[k].pos = shader.vertex(vertices[idx[k]], in[k].var);
+      }
+      const int n = clip_to_window(planes, c0 | c1 | c2, sp, poly, pw, in[0], in[1], in[2]);
       if (n < 3) {
         ++ch.stats.rejected;
         continue;
@@ -195,8 +249,39 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       }
     }
     batch.flush(take);
-    ch.bins.bin(grid);
-  });
+    bins.bin(grid);
+  };
+  // A depth-only draw whose chunks each use a compact range of vertices (a soup, a mesh in a cache-friendly
+  // order) shades each chunk's range inside the chunk's task, into the chunk's own small buffers, so window
+  // vertices are used while still in cache instead of going through memory; the vertices at the seams of two
+  // chunks are shaded by both, to the same values. The other chunks (and shaded draws) read vertices shaded once
+  // for the whole draw.
+  for (size_t c = 0; c < nchunks; ++c) chunks_[c]->pending = true;
+  if constexpr (!kShaded) {
+    pool_.parallel_for(nchunks, [&](size_t c) {
+      Chunk& ch = *chunks_[c];
+      const size_t first = c * detail::kChunkTriangles, end = std::min(ntri, first + detail::kChunkTriangles);
+      uint32_t lo = ~0u, hi = 0;
+      for (size_t i = 3 * first; i < 3 * end; ++i) {
+        const uint32_t v = indices.empty() ? uint32_t(i) : indices[i];
+        lo = std::min(lo, v), hi = std::max(hi, v);
+      }
+      if (hi >= nv || hi - lo >= detail::kChunkVertices) return;  // pending: out-of-range indices throw there
+      unsigned* codes = ch.codes.get<unsigned>(hi - lo + 1);
+      WindowVertex* win = ch.win.get<WindowVertex>(hi - lo + 1);
+      shade_vertices(lo, size_t(hi) + 1, codes, win);
+      front(c, codes, win, lo);
+      ch.pending = false;
+    });
+  }
+  bool pending = false;
+  for (size_t c = 0; c < nchunks; ++c) pending |= chunks_[c]->pending;
+  if (pending) {
+    shade_all_vertices();
+    pool_.parallel_for(nchunks, [&](size_t c) {
+      if (chunks_[c]->pending) front(c, all_codes, all_win, 0);
+    });
+  }
 
   // ---- Back end: each tile executes its commands, chunk by chunk, in submission order.
   DrawStats stats;
@@ -219,17 +304,23 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
                                std::min(sp.clip.y1, ((ty + 1) << kTileSizeLog2) - 1)};
           const size_t tile = size_t(ty) * size_t(grid.tiles_x) + size_t(tx);
           bool any = false;
-          for (const auto& chp : chunks) any |= chp->bins.offsets[tile] != chp->bins.offsets[tile + 1];
+          for (const auto& chp : chunks) {
+            const auto& offsets = bins_of(*chp).offsets;
+            any |= offsets[tile] != offsets[tile + 1];
+          }
           if (!any) return;
           TileHiZ hiz;  // hierarchical depth, for the stages that use it
           if (use_hiz) hiz.load(*targets.depth, tx << kTileSizeLog2, ty << kTileSizeLog2);
           for (const auto& chp : chunks) {
             const Chunk& ch = *chp;
             const auto stage = make_stage(ch, hiz);
-            const uint32_t b = ch.bins.offsets[tile], e = ch.bins.offsets[tile + 1];
+            const ChunkBins<Record>& bins = bins_of(ch);
+            const uint32_t b = bins.offsets[tile], e = bins.offsets[tile + 1];
             for (uint32_t i = b; i < e; ++i) {
-              const TriangleSetup& t = ch.bins.binned[i];
-              rasterize(t, rect, stage);
+              const Record& t = bins.binned[i];
+              if constexpr (kShaded) rasterize(t, rect, stage);
+              else if (t.full == kNoFullSetup) rasterize(t, rect, stage);
+              else rasterize(ch.full.template view<TriangleSetup>()[t.full], rect, stage);
             }
           }
         });

@@ -1,12 +1,14 @@
 // Triangle setup eight at a time: the front end of a depth-only draw queues its unclipped triangles here, and
 // every eight are set up together with the SIMD value types — snapping tests, culling, bounding box, edges with
-// the tie rule and llvmpipe's depth plane — giving exactly what setup_triangle() gives for each (setup.cpp).
-// Lanes whose snapped extent is too wide for the int32 edge arithmetic below go through setup_triangle().
+// the tie rule and llvmpipe's depth plane — giving each as the compact DepthSetup, exactly what packing
+// setup_triangle()'s record gives (setup.cpp, depth_setup.h). Lanes whose snapped extent is too wide for the
+// int32 edge arithmetic below go through setup_triangle() and are handed over as that full record.
 #pragma once
 #include <bit>
 #include <cstddef>
 #include <cstdint>
 
+#include "raster/depth_setup.h"
 #include "raster/limits.h"
 #include "raster/primitive.h"
 #include "raster/setup.h"
@@ -20,14 +22,12 @@ namespace raster {
 // such differences, below 2^29. The edge constant is taken at the box's first pixel (mx, my), whose centre
 // 256·mx + 128 lies within [xmin, xmax] for a triangle that is not outside (setup.cpp's box: the centres between
 // the snapped extremes, clamped to the draw's rectangle), so E = A·(256·mx + 128 − X_a) + B·(256·my + 128 − Y_a)
-// is below 2 · 2^14 · 2^14 = 2^29; F0 = floor((E − bias) / 256) is the edge's F at that pixel, and setup.cpp's
-// T = ceil((bias − C) / 256) equals A·mx + B·my − F0 (both are the same floor, shifted by the integer
-// A·mx + B·my), below 2^28 + 2^28 + 2^21 since pixel indices are below kMaxTargetSize = 2^14.
+// is below 2 · 2^14 · 2^14 = 2^29; F0 = floor((E − bias) / 256) is the edge's F at that pixel, which is what
+// DepthSetup stores: setup.cpp's T = ceil((bias − C) / 256) equals A·mx + B·my − F0 (both are the same floor,
+// shifted by the integer A·mx + B·my).
 inline constexpr int kBatchExtentBits = 14;
 static_assert(2 * (int64_t(1) << (2 * kBatchExtentBits)) < (int64_t(1) << 31), "area and edge values in int32");
-static_assert(kMaxTargetSize <= (1 << kBatchExtentBits), "A·mx fits 2^28");
-static_assert(kBatchExtentBits <= kNarrowCoefBits, "every batched triangle takes the narrow path");
-static_assert(2 * (int64_t(1) << 28) + (int64_t(1) << 21) < (int64_t(1) << 31), "T in int32");
+static_assert(kBatchExtentBits <= kNarrowCoefBits, "every batched triangle is narrow: it fits a DepthSetup");
 // Gather offsets are vertex index · 6 floats (WindowVertex), in int32: the batch is used when that fits.
 static_assert(sizeof(WindowVertex) == 6 * sizeof(float));
 inline constexpr size_t kBatchMaxVertices = size_t(1) << 28;
@@ -43,7 +43,8 @@ class SetupBatch {
   }
 
   // Queues the unclipped triangle with vertices (i0, i1, i2) of the window-space array; sets up eight at a time
-  // and hands each result to sink(SetupResult, const TriangleSetup&), in queue order.
+  // and hands each result to sink(SetupResult, const Record&), in queue order, with Record a DepthSetup, or a
+  // TriangleSetup for the lanes set up by setup_triangle(). The record is meaningful only when visible.
   template <class Sink>
   void push(uint32_t i0, uint32_t i1, uint32_t i2, Sink&& sink) {
     idx_[0][n_] = int32_t(i0), idx_[1][n_] = int32_t(i1), idx_[2][n_] = int32_t(i2);
@@ -63,7 +64,7 @@ class SetupBatch {
         sink(r, t);
         continue;
       }
-      sink(SetupResult(result_[l]), staged_[l]);  // the record is looked at only when visible
+      sink(SetupResult(result_[l]), staged_[l]);
     }
     n_ = 0;
   }
@@ -80,17 +81,17 @@ class SetupBatch {
   // Results of run(), lane by lane.
   unsigned simd_lanes_ = 0;  // lanes set up here; the others go through setup_triangle()
   alignas(32) int32_t result_[8];
-  alignas(32) TriangleSetup staged_[8];  // lane l's record, written by three 8 × 8 transposes
+  DepthSetup staged_[8];  // lane l's record, written by two 8 × 8 transposes
 };
 
-// The record as 24 dwords, three groups of eight, in the order run() builds them.
-static_assert(offsetof(TriangleSetup, t) == 0 && offsetof(TriangleSetup, a) == 24 && offsetof(TriangleSetup, b) == 36 &&
-              offsetof(TriangleSetup, min_x) == 48 && offsetof(TriangleSetup, min_y) == 52 &&
-              offsetof(TriangleSetup, max_x) == 56 && offsetof(TriangleSetup, max_y) == 60 &&
-              offsetof(TriangleSetup, z_a0) == 64 && offsetof(TriangleSetup, dzdx) == 68 &&
-              offsetof(TriangleSetup, dzdy) == 72 && offsetof(TriangleSetup, z_offset) == 76 &&
-              offsetof(TriangleSetup, prim) == 80 && offsetof(TriangleSetup, flags) == 84 &&
-              sizeof(TriangleSetup) == 96);
+// The record as 16 dwords, two groups of eight, in the order run() builds them; the box's int16 pairs are
+// dwords 9 (min_x, min_y) and 10 (max_x, max_y), low half first.
+static_assert(offsetof(DepthSetup, a) == 0 && offsetof(DepthSetup, b) == 12 && offsetof(DepthSetup, f0) == 24 &&
+              offsetof(DepthSetup, min_x) == 36 && offsetof(DepthSetup, min_y) == 38 &&
+              offsetof(DepthSetup, max_x) == 40 && offsetof(DepthSetup, max_y) == 42 &&
+              offsetof(DepthSetup, z_a0) == 44 && offsetof(DepthSetup, dzdx) == 48 &&
+              offsetof(DepthSetup, dzdy) == 52 && offsetof(DepthSetup, z_offset) == 56 &&
+              offsetof(DepthSetup, full) == 60 && sizeof(DepthSetup) == 64);
 
 inline void SetupBatch::run() {
   using simd::Mask;
@@ -141,12 +142,11 @@ inline void SetupBatch::run() {
   result = simd::select(culled, result, VecI32::splat(int32_t(SetupResult::culled)));
   result = simd::select(degenerate, result, VecI32::splat(int32_t(SetupResult::degenerate)));
   result.store_u32(reinterpret_cast<uint32_t*>(result_));
-  VecF32 rec[24];  // the records' dwords (see the static_assert above), lane by lane
-  rec[12] = simd::bitcast_f32(min_x), rec[13] = simd::bitcast_f32(min_y);
-  rec[14] = simd::bitcast_f32(max_x), rec[15] = simd::bitcast_f32(max_y);
-  rec[20] = simd::bitcast_f32(simd::select(front, VecI32::splat(int32_t(kBackFacingBit)), zero));
-  rec[21] = simd::bitcast_f32(VecI32::splat(int32_t(kNarrowEdges)));  // |A|, |B| < 2^kBatchExtentBits
-  rec[22] = rec[23] = simd::bitcast_f32(zero);
+  VecF32 rec[16];  // the records' dwords (see the static_assert above), lane by lane
+  // Visible boxes lie within [0, kMaxTargetSize − 1] (limits.h), so the int16 halves are the low bits.
+  rec[9] = simd::bitcast_f32(min_x | simd::shift_left<16>(min_y));
+  rec[10] = simd::bitcast_f32(max_x | simd::shift_left<16>(max_y));
+  rec[15] = simd::bitcast_f32(VecI32::splat(int32_t(kNoFullSetup)));
 
   // Edges of the counter-clockwise ordering (a, b, c) = (v0, v1, v2) or (v0, v2, v1), with the tie rule.
   const VecI32 ex[3] = {sx[0], simd::select(ccw, sx[2], sx[1]), simd::select(ccw, sx[1], sx[2])};
@@ -159,12 +159,9 @@ inline void SetupBatch::run() {
     const Mask inclusive = simd::cmp_lt(zero, A) | (simd::cmp_eq(A, zero) & simd::cmp_lt(zero, B));
     const VecI32 bias = simd::select(inclusive, VecI32::splat(1), zero);
     const VecI32 E = A * (cx - xa) + B * (cy - ya);
-    const VecI32 F0 = simd::shift_right<kSubpixelBits>(E - bias);
-    const VecI32 T = A * min_x + B * min_y - F0;
-    rec[2 * k] = simd::bitcast_f32(T);  // int64 little-endian: low half, then the sign
-    rec[2 * k + 1] = simd::bitcast_f32(simd::shift_right<31>(T));
-    rec[6 + k] = simd::bitcast_f32(A);
-    rec[9 + k] = simd::bitcast_f32(B);
+    rec[k] = simd::bitcast_f32(A);
+    rec[3 + k] = simd::bitcast_f32(B);
+    rec[6 + k] = simd::bitcast_f32(simd::shift_right<kSubpixelBits>(E - bias));  // F0
   }
 
   // Depth plane and polygon offset in llvmpipe's vertex order and float operations (setup.cpp, depth_plane).
@@ -181,9 +178,9 @@ inline void SetupBatch::run() {
   const VecF32 dzdx = dz01 * dy20o - dz20 * dy01o;
   const VecF32 dzdy = dz20 * dx01o - dz01 * dx20o;
   const VecF32 x0c = p0x - VecF32::splat(0.5f), y0c = p0y - VecF32::splat(0.5f);
-  rec[16] = p0z - (dzdx * x0c + dzdy * y0c);
-  rec[17] = dzdx;
-  rec[18] = dzdy;
+  rec[11] = p0z - (dzdx * x0c + dzdy * y0c);
+  rec[12] = dzdx;
+  rec[13] = dzdy;
   VecF32 z_offset = VecF32::splat(0.0f);
   if (has_offset_) {
     const VecI32 abs_bits = VecI32::splat(0x7fffffff);
@@ -201,13 +198,13 @@ inline void SetupBatch::run() {
     }
     z_offset = units + mult;
   }
-  rec[19] = z_offset;
+  rec[14] = z_offset;
   float* out = reinterpret_cast<float*>(staged_);
-  for (int g = 0; g < 3; ++g) {
+  for (int g = 0; g < 2; ++g) {
     VecF32 group[8];
     for (int i = 0; i < 8; ++i) group[i] = rec[8 * g + i];
     simd::transpose8(group);
-    for (int l = 0; l < 8; ++l) group[l].store(out + l * 24 + 8 * g);
+    for (int l = 0; l < 8; ++l) group[l].store(out + l * 16 + 8 * g);
   }
 }
 

@@ -6,6 +6,9 @@
 //     using Vertex = MyVertex;                  // what the vertex buffer holds
 //     struct Varyings { glm::vec3 n; glm::vec2 uv; };  // floats only; interpolated perspective-correctly
 //     glm::vec4 vertex(const Vertex& v, Varyings& out) const;   // returns the clip-space position
+//     // vertex() must be a pure function of the vertex and the shader's (snapshotted) members: shaded draws run
+//     // it once per vertex, depth-only draws may run it again for a vertex (where two chunks' vertex ranges
+//     // meet, and for triangles that need clipping), as GL allows a vertex shader to run more than once.
 //     // Optional fragment stage, one 2×2 quad at a time (so it can take derivatives, see quad.h):
 //     void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const;
 //     // Optional wide form of the same fragment stage, two quads (4×2 pixels) in SIMD lanes (see quad.h). When

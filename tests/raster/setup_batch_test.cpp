@@ -1,12 +1,15 @@
 // Triangle setup eight at a time (raster/setup_batch.h) against setup_triangle() one at a time: the same outcome
 // and the same record, bit for bit, for random triangles of every size (the wide ones take the scalar fallback),
-// degenerate and outside ones, every cull mode and front face, and polygon offset in every format.
+// degenerate and outside ones, every cull mode and front face, and polygon offset in every format. The batch's
+// compact records (DepthSetup) must be exactly what packing setup_triangle()'s record gives, and expand back to it.
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <random>
+#include <type_traits>
 #include <vector>
 
+#include "raster/depth_setup.h"
 #include "raster/setup.h"
 #include "raster/setup_batch.h"
 
@@ -16,7 +19,9 @@ namespace {
 
 struct Outcome {
   SetupResult result;
-  TriangleSetup setup;
+  TriangleSetup setup;  // the batch's record, expanded when it was a DepthSetup
+  bool compact = false;
+  DepthSetup packed{};
 };
 
 // Random window vertices: clusters of three around a random centre, of a random size from sub-pixel to the whole
@@ -45,7 +50,13 @@ void expect_same(const SetupParams& sp, const std::vector<WindowVertex>& v, cons
   const size_t n = v.size() / 3;
   std::vector<Outcome> batched;
   SetupBatch batch(sp, v.data());
-  auto sink = [&](SetupResult r, const TriangleSetup& t) { batched.push_back({r, t}); };
+  auto sink = [&](SetupResult r, const auto& t) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(t)>, DepthSetup>) {
+      batched.push_back({r, expand_depth_setup(t), true, t});
+    } else {
+      batched.push_back({r, t});
+    }
+  };
   for (size_t i = 0; i < n; ++i) {
     batch.push(uint32_t(3 * i), uint32_t(3 * i + 1), uint32_t(3 * i + 2), sink);
     if (i % 37 == 36) batch.flush(sink);  // partial batches, as before a clipped triangle
@@ -60,6 +71,12 @@ void expect_same(const SetupParams& sp, const std::vector<WindowVertex>& v, cons
     if (r != SetupResult::visible) continue;
     ++visible;
     const TriangleSetup& b = batched[i].setup;
+    if (batched[i].compact) {  // every field of the packed record, and what expanding it gives
+      ASSERT_TRUE(fits_depth_setup(one)) << what << ", triangle " << i;
+      const DepthSetup p = pack_depth_setup(one);
+      ASSERT_EQ(std::memcmp(&p, &batched[i].packed, sizeof(DepthSetup)), 0) << what << ", triangle " << i;
+      one.prim = 0;  // the compact record does not keep the back-facing bit
+    }
     for (int k = 0; k < 3; ++k) {
       ASSERT_EQ(b.t[k], one.t[k]) << what << ", triangle " << i << ", edge " << k;
       ASSERT_EQ(b.a[k], one.a[k]) << what << ", triangle " << i;

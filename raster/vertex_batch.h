@@ -1,0 +1,78 @@
+// The vertex stage's fixed-function part eight vertices at a time: the clip test (outcodes, as OutcodeTester)
+// and, for vertices inside every plane, the viewport transform and snapping (as to_window() in setup.h), one
+// vertex per SIMD lane with the very same float operations in the same order, so the results are bit for bit
+// those of the one-vertex code. Front end of the pipeline, after the vertex shader.
+#pragma once
+#include <bit>
+#include <cstdint>
+
+#include "raster/clip.h"
+#include "raster/limits.h"
+#include "raster/primitive.h"
+#include "raster/setup.h"
+#include "raster/simd/vec.h"
+
+namespace raster {
+
+class VertexBatch {
+ public:
+  // `invalid` is the code of a vertex with a coordinate that is not finite.
+  VertexBatch(const ClipPlanes& cp, const SetupParams& sp, unsigned invalid)
+      : planes_(cp), sp_(sp), invalid_(invalid) {}
+
+  // Lanes [0, n) of the clip-space positions (x, y, z, w), n <= 8: codes[l] for each, and win[l] for those
+  // whose code is 0 (the others' win[l] is left alone).
+  void run(const float* x, const float* y, const float* z, const float* w, int n, unsigned* codes,
+           WindowVertex* win) const {
+    using simd::Mask;
+    using simd::VecF32;
+    using simd::VecI32;
+    const VecF32 px = VecF32::load(x), py = VecF32::load(y), pz = VecF32::load(z), pw = VecF32::load(w);
+    // std::isfinite: the exponent field is not all ones.
+    const VecI32 exp = VecI32::splat(0x7f800000);
+    auto finite = [&](VecF32 v) { return simd::cmp_neq(simd::bitcast_i32(v) & exp, exp); };
+    const Mask ok = finite(px) & finite(py) & finite(pz) & finite(pw);
+    // Outcodes: bit k when outside plane k, ((nx·x + ny·y) + nz·z) + nw·w + bias < 0 or NaN (OutcodeTester).
+    VecI32 code = VecI32::splat(0);
+    const VecF32 zero = VecF32::splat(0.0f);
+    for (int k = 0; k < planes_.count; ++k) {
+      const ClipPlane& p = planes_.planes[size_t(k)];
+      const VecF32 d = VecF32::splat(p.n.x) * px + VecF32::splat(p.n.y) * py + VecF32::splat(p.n.z) * pz +
+                       VecF32::splat(p.n.w) * pw + VecF32::splat(p.bias);
+      code = code | simd::select(simd::cmp_le(zero, d), VecI32::splat(1 << k), VecI32::splat(0));
+    }
+    code = code | simd::select(simd::cmp_lt(zero, pw), VecI32::splat(1 << planes_.count), VecI32::splat(0));
+    code = simd::select(ok, VecI32::splat(int32_t(invalid_)), code);
+    alignas(32) uint32_t c[8];
+    code.store_u32(c);
+    unsigned inside = 0;
+    for (int l = 0; l < n; ++l) {
+      codes[l] = c[l];
+      inside |= unsigned(c[l] == 0) << l;
+    }
+    if (inside == 0) return;
+    // to_window(): ndc = clip · (1/w), then one fused multiply-add per axis, snapping by round-to-nearest-even.
+    const VecF32 inv_w = simd::div(VecF32::splat(1.0f), pw);
+    const VecF32 nx = px * inv_w, ny = py * inv_w, nz = pz * inv_w;
+    const VecF32 wx = simd::fma(nx, VecF32::splat(sp_.vp_half_w), VecF32::splat(sp_.vp_center_x));
+    const VecF32 wy = simd::fma(ny, VecF32::splat(sp_.vp_half_h), VecF32::splat(sp_.vp_center_y));
+    const VecF32 wz = simd::fma(nz, VecF32::splat(0.5f), VecF32::splat(0.5f));
+    const VecI32 sx = simd::round_to_int(wx * VecF32::splat(float(kSubpixelScale)));
+    const VecI32 sy = simd::round_to_int(wy * VecF32::splat(float(kSubpixelScale)));
+    alignas(32) float out[4][8];
+    alignas(32) uint32_t snapped[2][8];
+    wx.store(out[0]), wy.store(out[1]), wz.store(out[2]), inv_w.store(out[3]);
+    sx.store_u32(snapped[0]), sy.store_u32(snapped[1]);
+    for (unsigned m = inside; m != 0; m &= m - 1) {
+      const int l = std::countr_zero(m);
+      win[l] = WindowVertex{out[0][l], out[1][l], out[2][l], out[3][l], int32_t(snapped[0][l]), int32_t(snapped[1][l])};
+    }
+  }
+
+ private:
+  ClipPlanes planes_;
+  SetupParams sp_;
+  unsigned invalid_;
+};
+
+}  // namespace raster

@@ -1,0 +1,150 @@
+// The compact record of depth-only draws (raster/depth_setup.h) and the eight-wide vertex stage
+// (raster/vertex_batch.h) against the one-at-a-time code they replace: packing then expanding gives setup's record
+// field for field, and the edge values coverage reads agree, for triangles at the extremes of the supported range
+// (largest target, edges just inside the narrow bound, boxes at the far corners and clamped by the draw's
+// rectangle); the vertex batch gives the outcodes and window vertices of OutcodeTester and to_window().
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "raster/coverage.h"
+#include "raster/depth_setup.h"
+#include "raster/outcode.h"
+#include "raster/setup.h"
+#include "raster/vertex_batch.h"
+
+using namespace raster;
+
+namespace {
+
+WindowVertex snapped_vertex(int32_t sx, int32_t sy, float z) {
+  WindowVertex v{};
+  v.x = float(sx) / float(kSubpixelScale), v.y = float(sy) / float(kSubpixelScale), v.z = z, v.inv_w = 1.0f;
+  v.sx = sx, v.sy = sy;
+  return v;
+}
+
+// Checks pack/expand and the edge values over the box widened by one block, where rasterize() evaluates them.
+void expect_round_trip(const TriangleSetup& t, const std::string& what) {
+  ASSERT_TRUE(fits_depth_setup(t)) << what;
+  const DepthSetup d = pack_depth_setup(t);
+  const TriangleSetup e = expand_depth_setup(d);
+  for (int k = 0; k < 3; ++k) {
+    ASSERT_EQ(e.a[k], t.a[k]) << what;
+    ASSERT_EQ(e.b[k], t.b[k]) << what;
+    ASSERT_EQ(e.t[k], t.t[k]) << what << ", edge " << k;
+  }
+  ASSERT_EQ(e.min_x, t.min_x) << what;
+  ASSERT_EQ(e.min_y, t.min_y) << what;
+  ASSERT_EQ(e.max_x, t.max_x) << what;
+  ASSERT_EQ(e.max_y, t.max_y) << what;
+  ASSERT_EQ(std::memcmp(&e.z_a0, &t.z_a0, 4 * sizeof(float)), 0) << what;
+  ASSERT_EQ(e.flags, t.flags) << what;
+  const int32_t xs[] = {t.min_x - kBlockSize, t.min_x, t.max_x, t.max_x + kBlockSize};
+  const int32_t ys[] = {t.min_y - kBlockSize, t.min_y, t.max_y, t.max_y + kBlockSize};
+  for (int k = 0; k < 3; ++k)
+    for (int32_t x : xs)
+      for (int32_t y : ys) {
+        const int64_t f = edge_value(t, k, x, y);
+        ASSERT_EQ(edge_value(d, k, x, y), f) << what;
+        ASSERT_LT(std::abs(f), int64_t(1) << 31) << what;  // limits.h: narrow edge values fit int32 there
+        ASSERT_EQ(edge_value_narrow(d, k, x, y), int32_t(f)) << what;
+        ASSERT_EQ(edge_value_narrow(t, k, x, y), int32_t(f)) << what;
+      }
+}
+
+}  // namespace
+
+TEST(DepthSetup, CompactRecordReproducesSetupAtTheExtremes) {
+  const SetupParams sp = make_setup_params(DrawState{}, kMaxTargetSize, kMaxTargetSize, DepthFormat::d32f);
+  const int32_t kMax = (int32_t(1) << kNarrowCoefBits) - 1;  // the widest narrow extent, sub-pixel units
+  const int32_t far = kMaxTargetSize * kSubpixelScale;       // the target's far edge, sub-pixel units
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int32_t> extent(1, kMax), anywhere(-kMax, far + kMax), depth(0, 1000);
+  size_t checked = 0;
+  auto check = [&](const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const std::string& what) {
+    TriangleSetup t{};
+    if (setup_triangle(a, b, c, sp, t) != SetupResult::visible) return;
+    if (!fits_depth_setup(t)) return;
+    expect_round_trip(t, what);
+    ++checked;
+  };
+  // Right triangles with legs of the widest narrow extent, in both orientations, at every corner of the target
+  // (boxes clamped by the draw's rectangle when they stick out) and in the middle.
+  const int32_t corners[][2] = {{0, 0}, {far, 0}, {0, far}, {far, far}, {far / 2, far / 2}, {-kMax / 2, far - 100}};
+  for (const auto& o : corners)
+    for (int sx : {-1, 1})
+      for (int sy : {-1, 1}) {
+        const WindowVertex a = snapped_vertex(o[0], o[1], 0.25f);
+        const WindowVertex b = snapped_vertex(o[0] + sx * kMax, o[1], 0.5f);
+        const WindowVertex c = snapped_vertex(o[0], o[1] + sy * kMax, 0.75f);
+        check(a, b, c, "corner triangle");
+        check(a, c, b, "corner triangle, other winding");
+      }
+  // One unit past the bound: not narrow, so it keeps its full record.
+  {
+    TriangleSetup t{};
+    ASSERT_EQ(setup_triangle(snapped_vertex(1000, 1000, 0.5f), snapped_vertex(1000 + kMax + 1, 1000, 0.5f),
+                             snapped_vertex(1000, 2000, 0.5f), sp, t),
+              SetupResult::visible);
+    EXPECT_FALSE(fits_depth_setup(t));
+  }
+  // Random narrow triangles anywhere, of any extent up to the bound.
+  for (int i = 0; i < 20000; ++i) {
+    const int32_t x0 = anywhere(rng), y0 = anywhere(rng), w = extent(rng), h = extent(rng);
+    std::uniform_int_distribution<int32_t> dx(0, w), dy(0, h);
+    const WindowVertex a = snapped_vertex(x0 + dx(rng), y0, float(depth(rng)) / 1000.0f);
+    const WindowVertex b = snapped_vertex(x0 + w, y0 + dy(rng), float(depth(rng)) / 1000.0f);
+    const WindowVertex c = snapped_vertex(x0, y0 + h, float(depth(rng)) / 1000.0f);
+    check(a, b, c, "random triangle " + std::to_string(i));
+  }
+  EXPECT_GT(checked, size_t(5000));
+}
+
+TEST(DepthSetup, VertexBatchMatchesOneVertexAtATime) {
+  constexpr unsigned kInvalid = 1u << 31;
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-1.6f, 1.6f), w_dist(-0.2f, 2.0f);
+  std::uniform_int_distribution<int> special(0, 19);
+  for (bool clamp : {false, true}) {
+    DrawState s;
+    s.depth_clamp = clamp;
+    s.viewport = Rect{-30, 17, 901, 555};
+    const SetupParams sp = make_setup_params(s, 800, 600, DepthFormat::d24);
+    const ClipPlanes planes = make_clip_planes(clamp, sp.vp_half_w, sp.vp_center_x, sp.vp_half_h, sp.vp_center_y);
+    const OutcodeTester outcode_of(planes);
+    const VertexBatch batch(planes, sp, kInvalid);
+    for (int round = 0; round < 4000; ++round) {
+      const int n = 1 + round % 8;
+      alignas(32) float x[8], y[8], z[8], w[8];
+      for (int l = 0; l < 8; ++l) {
+        const float pw = w_dist(rng);
+        x[l] = u(rng) * pw, y[l] = u(rng) * pw, z[l] = u(rng) * pw, w[l] = pw;
+        switch (special(rng)) {
+          case 0: x[l] = nan; break;
+          case 1: w[l] = inf; break;
+          case 2: w[l] = 0.0f; break;
+          case 3: z[l] = -inf; break;
+          default: break;
+        }
+      }
+      unsigned codes[8];
+      WindowVertex win[8] = {};
+      batch.run(x, y, z, w, n, codes, win);
+      for (int l = 0; l < n; ++l) {
+        const glm::vec4 p(x[l], y[l], z[l], w[l]);
+        const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+        const unsigned code = finite ? outcode_of(p) : kInvalid;
+        ASSERT_EQ(codes[l], code) << "round " << round << ", lane " << l;
+        if (code != 0) continue;
+        const WindowVertex one = to_window(p, sp);
+        ASSERT_EQ(std::memcmp(&win[l], &one, sizeof(WindowVertex)), 0) << "round " << round << ", lane " << l;
+      }
+    }
+  }
+}
