@@ -68,6 +68,7 @@ class Renderer {
     ScratchBuffer interps;  // TriangleInterp<Varyings>, shaded draws only
     ScratchBuffer codes, win;  // depth-only draws: the outcodes and window vertices of the chunk's vertex range
     bool pending = true;       // the front end has still to run, with the draw's vertices
+    uint32_t range_lo = 0, range_hi = 0;  // depth-only draws: the smallest and largest vertex index the chunk uses
     size_t interp_count = 0;
     DrawStats stats;
   };
@@ -251,11 +252,11 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     batch.flush(take);
     bins.bin(grid);
   };
-  // A depth-only draw whose chunks each use a compact range of vertices (a soup, a mesh in a cache-friendly
-  // order) shades each chunk's range inside the chunk's task, into the chunk's own small buffers, so window
-  // vertices are used while still in cache instead of going through memory; the vertices at the seams of two
-  // chunks are shaded by both, to the same values. The other chunks (and shaded draws) read vertices shaded once
-  // for the whole draw.
+  // A depth-only draw whose chunks use disjoint, compact vertex ranges (a soup: each chunk owns its vertices)
+  // shades each chunk's range inside the chunk's task, into the chunk's own small buffers, so window vertices
+  // are used while still in cache instead of going through memory. Where the ranges overlap or hold unused
+  // vertices (meshes share vertices between chunks), together more than nv + nv/8 vertices, the draw shades every
+  // vertex once for the whole draw instead, as shaded draws always do.
   for (size_t c = 0; c < nchunks; ++c) chunks_[c]->pending = true;
   if constexpr (!kShaded) {
     pool_.parallel_for(nchunks, [&](size_t c) {
@@ -266,13 +267,27 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
         const uint32_t v = indices.empty() ? uint32_t(i) : indices[i];
         lo = std::min(lo, v), hi = std::max(hi, v);
       }
-      if (hi >= nv || hi - lo >= detail::kChunkVertices) return;  // pending: out-of-range indices throw there
-      unsigned* codes = ch.codes.get<unsigned>(hi - lo + 1);
-      WindowVertex* win = ch.win.get<WindowVertex>(hi - lo + 1);
-      shade_vertices(lo, size_t(hi) + 1, codes, win);
-      front(c, codes, win, lo);
-      ch.pending = false;
+      ch.range_lo = lo, ch.range_hi = hi;
     });
+    size_t shaded = 0;  // vertices the chunks would shade between them
+    bool compact = true;
+    for (size_t c = 0; c < nchunks && compact; ++c) {
+      const Chunk& ch = *chunks_[c];
+      // Out-of-range indices take the whole-draw path, whose front end reports them.
+      compact = ch.range_hi < nv && ch.range_hi - ch.range_lo < detail::kChunkVertices;
+      shaded += size_t(ch.range_hi - ch.range_lo) + 1;
+    }
+    if (compact && shaded <= nv + nv / 8) {
+      pool_.parallel_for(nchunks, [&](size_t c) {
+        Chunk& ch = *chunks_[c];
+        const uint32_t lo = ch.range_lo, hi = ch.range_hi;
+        unsigned* codes = ch.codes.get<unsigned>(hi - lo + 1);
+        WindowVertex* win = ch.win.get<WindowVertex>(hi - lo + 1);
+        shade_vertices(lo, size_t(hi) + 1, codes, win);
+        front(c, codes, win, lo);
+        ch.pending = false;
+      });
+    }
   }
   bool pending = false;
   for (size_t c = 0; c < nchunks; ++c) pending |= chunks_[c]->pending;
