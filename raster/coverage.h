@@ -51,58 +51,79 @@ struct EdgeRows {
 // Whether every edge coefficient is small enough for the narrow path's int32 edge values (limits.h).
 inline bool is_narrow(const TriangleSetup& t) { return t.flags & kNarrowEdges; }
 
-// The block walk of a row stage over the pixels [x0, x1] × [y0, y1] of one tile. Each edge's exact int64 value
-// is stepped from block to block (g = F at the block's corner where F is largest, so the block lies outside the
-// edge when g < 0 and the edge crosses it when g < its range over the block); blocks inside every edge are
-// handed over row by row without per-pixel edge tests.
-template <class Tri, class Stage>
-inline void rasterize_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const Stage& stage) {
+// The block walk shared by both stage kinds over the pixels [x0, x1] × [y0, y1] of one tile. Each edge's exact
+// int64 value is stepped from block to block (g = F at the block's corner where F is largest, so the block lies
+// outside the edge when g < 0 and the edge crosses it when g < its range over the block); visit(bx, by, row_lo,
+// row_hi, block) is called for every block not outside an edge, `block` saying which edges cross it and giving
+// their exact values at its first row.
+struct WalkedBlock {
+  bool crosses[3];
+  int64_t g[3], to_start[3];
+  bool accepted() const { return !crosses[0] && !crosses[1] && !crosses[2]; }  // inside every edge
+  // F of each edge at pixel (bx, by + row_lo), the block's first pixel on that row.
+  template <class Tri>
+  void row_start(const Tri& t, int row_lo, int64_t f[3]) const {
+    for (int k = 0; k < 3; ++k) f[k] = g[k] + to_start[k] + t.b[k] * int64_t(row_lo);
+  }
+};
+
+template <class Tri, class Visit>
+inline void walk_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, Visit&& visit) {
   constexpr int64_t kSpan = kBlockSize - 1;
   const int32_t bx0 = x0 & ~(kBlockSize - 1), by0 = y0 & ~(kBlockSize - 1);
-  int64_t g_row[3], range[3], to_start[3], step_x[3], step_y[3];
+  int64_t g_row[3], range[3], step_x[3], step_y[3];
+  WalkedBlock w;
   for (int k = 0; k < 3; ++k) {
     const int64_t a = t.a[k], b = t.b[k];
     const int64_t hi = (std::max<int64_t>(a, 0) + std::max<int64_t>(b, 0)) * kSpan;
     g_row[k] = edge_value(t, k, bx0, by0) + hi;
     range[k] = (std::abs(a) + std::abs(b)) * kSpan;
-    to_start[k] = -hi;  // g + to_start: F at the block's first pixel
+    w.to_start[k] = -hi;  // g + to_start: F at the block's first pixel
     step_x[k] = a * kBlockSize;
     step_y[k] = b * kBlockSize;
   }
-  const auto hiz = stage.hiz_plane(t, PixelRect{x0, y0, x1, y1});
   for (int32_t by = by0; by <= y1; by += kBlockSize) {
     const int row_lo = std::max(y0 - by, 0), row_hi = std::min(y1 - by, kBlockSize - 1);
-    const unsigned rows = lane_range_mask(row_lo, row_hi);
     int64_t g0 = g_row[0], g1 = g_row[1], g2 = g_row[2];
     for (int32_t bx = bx0; bx <= x1; bx += kBlockSize, g0 += step_x[0], g1 += step_x[1], g2 += step_x[2]) {
       if ((g0 | g1 | g2) < 0) continue;  // outside an edge
-      if (stage.block_hidden(hiz, bx, by)) continue;
-      const bool crosses[3] = {g0 < range[0], g1 < range[1], g2 < range[2]};
-      const simd::Mask lanes =
-          simd::Mask::from_bits(lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1)));
-      const auto cols = stage.columns(t, bx);
-      typename Stage::BlockMax bm;
-      unsigned done = rows;
-      auto at = stage.cursor(bx, by + row_lo);
-      if (!crosses[0] && !crosses[1] && !crosses[2]) {  // trivially accepted
-        for (int r = row_lo; r <= row_hi; ++r, stage.next_row(at)) stage.row(cols, at, lanes, bm);
-      } else {
-        const int64_t f_start[3] = {g0 + to_start[0] + t.b[0] * int64_t(row_lo),
-                                    g1 + to_start[1] + t.b[1] * int64_t(row_lo),
-                                    g2 + to_start[2] + t.b[2] * int64_t(row_lo)};
-        EdgeRows edges(t, f_start, crosses);
-        for (int r = row_lo; r <= row_hi; ++r) {
-          const simd::Mask m = lanes & edges.inside();
-          if (m.any()) stage.row(cols, at, m, bm);
-          else done &= ~(1u << r);
-          edges.next_row();
-          stage.next_row(at);
-        }
-      }
-      stage.block_done(bx, by, bm, done);
+      w.g[0] = g0, w.g[1] = g1, w.g[2] = g2;
+      w.crosses[0] = g0 < range[0], w.crosses[1] = g1 < range[1], w.crosses[2] = g2 < range[2];
+      visit(bx, by, row_lo, row_hi, static_cast<const WalkedBlock&>(w));
     }
     for (int k = 0; k < 3; ++k) g_row[k] += step_y[k];
   }
+}
+
+// A row stage's blocks: those hidden by hierarchical depth are skipped, blocks inside every edge are handed
+// over row by row without per-pixel edge tests, the others row by row with their edge values.
+template <class Tri, class Stage>
+inline void rasterize_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const Stage& stage) {
+  const auto hiz = stage.hiz_plane(t, PixelRect{x0, y0, x1, y1});
+  walk_blocks(t, x0, y0, x1, y1, [&](int32_t bx, int32_t by, int row_lo, int row_hi, const WalkedBlock& blk) {
+    if (stage.block_hidden(hiz, bx, by)) return;
+    const simd::Mask lanes =
+        simd::Mask::from_bits(lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1)));
+    const auto cols = stage.columns(t, bx);
+    typename Stage::BlockMax bm;
+    unsigned done = lane_range_mask(row_lo, row_hi);
+    auto at = stage.cursor(bx, by + row_lo);
+    if (blk.accepted()) {
+      for (int r = row_lo; r <= row_hi; ++r, stage.next_row(at)) stage.row(cols, at, lanes, bm);
+    } else {
+      int64_t f_start[3];
+      blk.row_start(t, row_lo, f_start);
+      EdgeRows edges(t, f_start, blk.crosses);
+      for (int r = row_lo; r <= row_hi; ++r) {
+        const simd::Mask m = lanes & edges.inside();
+        if (m.any()) stage.row(cols, at, m, bm);
+        else done &= ~(1u << r);
+        edges.next_row();
+        stage.next_row(at);
+      }
+    }
+    stage.block_done(bx, by, bm, done);
+  });
 }
 
 // Bits [8·row_lo, 8·row_hi + 7] of a block mask, each row holding `lanes`.
@@ -111,48 +132,27 @@ inline uint64_t block_rows_mask(unsigned lanes, int row_lo, int row_hi) {
   return (uint64_t(lanes) * 0x0101010101010101ull) & rows;
 }
 
-// The block walk of a block stage (shaded draws) over [x0, x1] × [y0, y1]: the same stepped int64 edge values
-// as rasterize_blocks, one 64-bit coverage mask per block (bit 8·r + l for pixel (bx + l, by + r)); blocks
-// inside every edge get their mask without per-pixel edge tests.
+// A block stage's blocks (shaded draws): one 64-bit coverage mask per block (bit 8·r + l for pixel
+// (bx + l, by + r)); blocks inside every edge get their mask without per-pixel edge tests.
 template <class Stage>
 inline void rasterize_block_masks(const TriangleSetup& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
                                   const Stage& stage) {
-  constexpr int64_t kSpan = kBlockSize - 1;
-  const int32_t bx0 = x0 & ~(kBlockSize - 1), by0 = y0 & ~(kBlockSize - 1);
-  int64_t g_row[3], range[3], to_start[3], step_x[3], step_y[3];
-  for (int k = 0; k < 3; ++k) {
-    const int64_t a = t.a[k], b = t.b[k];
-    const int64_t hi = (std::max<int64_t>(a, 0) + std::max<int64_t>(b, 0)) * kSpan;
-    g_row[k] = a * bx0 + b * by0 - t.t[k] + hi;
-    range[k] = (std::abs(a) + std::abs(b)) * kSpan;
-    to_start[k] = -hi;
-    step_x[k] = a * kBlockSize;
-    step_y[k] = b * kBlockSize;
-  }
-  for (int32_t by = by0; by <= y1; by += kBlockSize) {
-    const int row_lo = std::max(y0 - by, 0), row_hi = std::min(y1 - by, kBlockSize - 1);
-    int64_t g0 = g_row[0], g1 = g_row[1], g2 = g_row[2];
-    for (int32_t bx = bx0; bx <= x1; bx += kBlockSize, g0 += step_x[0], g1 += step_x[1], g2 += step_x[2]) {
-      if ((g0 | g1 | g2) < 0) continue;  // outside an edge
-      const unsigned lanes = lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1));
-      const bool crosses[3] = {g0 < range[0], g1 < range[1], g2 < range[2]};
-      if (!crosses[0] && !crosses[1] && !crosses[2]) {  // trivially accepted
-        stage.block(t, bx, by, block_rows_mask(lanes, row_lo, row_hi));
-        continue;
-      }
-      const int64_t f_start[3] = {g0 + to_start[0] + t.b[0] * int64_t(row_lo),
-                                  g1 + to_start[1] + t.b[1] * int64_t(row_lo),
-                                  g2 + to_start[2] + t.b[2] * int64_t(row_lo)};
-      EdgeRows edges(t, f_start, crosses);
-      uint64_t mask = 0;
-      for (int r = row_lo; r <= row_hi; ++r) {
-        mask |= uint64_t(edges.inside().bits() & lanes) << (8 * r);
-        edges.next_row();
-      }
-      if (mask) stage.block(t, bx, by, mask);
+  walk_blocks(t, x0, y0, x1, y1, [&](int32_t bx, int32_t by, int row_lo, int row_hi, const WalkedBlock& blk) {
+    const unsigned lanes = lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1));
+    if (blk.accepted()) {
+      stage.block(t, bx, by, block_rows_mask(lanes, row_lo, row_hi));
+      return;
     }
-    for (int k = 0; k < 3; ++k) g_row[k] += step_y[k];
-  }
+    int64_t f_start[3];
+    blk.row_start(t, row_lo, f_start);
+    EdgeRows edges(t, f_start, blk.crosses);
+    uint64_t mask = 0;
+    for (int r = row_lo; r <= row_hi; ++r) {
+      mask |= uint64_t(edges.inside().bits() & lanes) << (8 * r);
+      edges.next_row();
+    }
+    if (mask) stage.block(t, bx, by, mask);
+  });
 }
 
 // Rasterizes one triangle within `r` (a rectangle inside one tile) and hands covered pixels to the stage.

@@ -119,7 +119,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   // Depth-only draws keep no clip-space vertices: the few triangles that need clipping run the shader again
   // on their vertices (a const function of the vertex and the snapshot), which saves writing them all.
   // shade_vertices(begin, end, codes, win) fills codes[i − begin] and win[i − begin] for vertices [begin, end).
-  CV* post = post_.get<CV>(nv);
+  CV* post = kShaded ? post_.get<CV>(nv) : nullptr;  // depth-only draws keep no clip-space vertices
   const VertexBatch fixed_function(planes, sp, detail::kInvalidVertex);
   auto shade_vertices = [&](size_t begin, size_t end, unsigned* codes, WindowVertex* win) {
     for (size_t i0 = begin; i0 < end; i0 += 8) {

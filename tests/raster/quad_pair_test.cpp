@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/quad_path_only.h"
 #include "raster/renderer.h"
 
 using namespace raster;
@@ -75,15 +76,7 @@ struct PairShader {
 
 // The same shader with only its quad form visible: the pipeline takes the quad path.
 template <class S>
-struct QuadOnly {
-  using Vertex = typename S::Vertex;
-  using Varyings = typename S::Varyings;
-  static constexpr bool kDiscards = shader_discards<S>();
-  static constexpr bool kWritesDepth = shader_writes_depth<S>();
-  S s;
-  glm::vec4 vertex(const Vertex& v, Varyings& o) const { return s.vertex(v, o); }
-  void fragment(const QuadIn<Varyings>& q, QuadOut& out) const { s.fragment(q, out); }
-};
+using QuadOnly = QuadPathOnly<S>;
 
 static_assert(HasPairFragmentStage<PairShader<0>>);
 static_assert(!HasPairFragmentStage<QuadOnly<PairShader<0>>>);
