@@ -1,9 +1,10 @@
 // The kernels behind ShadowLookup2D's fast paths: hardware PCF with LEQUAL at level 0 of a d16, d24 or d32f
 // map, clamp_to_edge or clamp_to_border. Each does exactly the operations of footprint_2d + reduce_compare in
-// the same order (so results are bit-identical to the generic lookups), without switches or branches:
+// the same order (so results are bit-identical to the generic lookups), without switches:
 //   pcf_lequal_scalar  the scalar twin, always compiled;
 //   pcf_lequal_sse     one lookup, its four taps in one SSE register (AVX2 builds);
-//   pcf_lequal_gather8 eight lookups at once in AVX2 lanes (d16, d24, d32f);
+//   pcf_lequal_gather8 eight lookups at once in AVX2 lanes (d16, d24, d32f): a short path for groups whose
+//                      footprints lie inside the map, pcf_lequal_any8 for the others;
 //   pcf_lequal_x8      eight lookups in raster/simd lanes: gather8, or lane by lane (scalar builds, and d16 maps
 //                      one texel wide or high).
 // The only intrinsics in shading/: raster/simd's eight-lane types have no floor or gather.
@@ -140,12 +141,58 @@ struct Pcf8Level {
         pitch(int(L.row_bytes / 4)), tiny(L.width < 2 || L.height < 2) {}
 };
 
+// Element offsets of the texel pairs starting at column xb of row yb: in 32-bit texels, or 16-bit for d16.
+template <TexelFormat F>
+inline __m256i pair_offsets8(const Pcf8Level& L, __m256i xb, __m256i yb) {
+  return _mm256_add_epi32(_mm256_mullo_epi32(yb, F == TexelFormat::d16 ? L.vpitch16 : L.vpitch), xb);
+}
+
+// The four texels of eight bilinear footprints whose pairs start at element offset off (see pair_offsets8) of a
+// map at least 2 × 2: tex[0..3] at (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1).
+//   32-bit texels (d24 as raw bits, d32f): scalar loads of 8-byte pairs, much cheaper than AVX2 gathers on the
+//   machines measured; d16: each lane's pair is one 32-bit word, gathered once per row and decoded as
+//   Texel<d16> does (code / 65535, an exact conversion and a correctly rounded division).
+template <TexelFormat F>
+inline void load_pairs8(const Pcf8Level& L, __m256i offv, __m256 tex[4]) {
+  if constexpr (F == TexelFormat::d16) {
+    const int* base = reinterpret_cast<const int*>(L.level.data);
+    const __m256i low = _mm256_set1_epi32(0xFFFF);
+    const __m256 maxcode = _mm256_set1_ps(65535.0f);
+    for (int r = 0; r < 2; ++r) {
+      const __m256i pair = _mm256_i32gather_epi32(base, r ? _mm256_add_epi32(offv, L.vpitch16) : offv, 2);
+      tex[2 * r] = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(pair, low)), maxcode);
+      tex[2 * r + 1] = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_srli_epi32(pair, 16)), maxcode);
+    }
+  } else {
+    // The offsets move to general registers two at a time (vmovq / vpextrq, then a shift): storing the vector
+    // and loading the eight offsets back was slower on Zen 3 (1.12x to 1.2x on the Poisson pass), the loads
+    // waiting on the store rather than being forwarded from it.
+    const __m128i olo = _mm256_castsi256_si128(offv), ohi = _mm256_extracti128_si256(offv, 1);
+    const uint64_t q0 = uint64_t(_mm_cvtsi128_si64(olo)), q1 = uint64_t(_mm_extract_epi64(olo, 1));
+    const uint64_t q2 = uint64_t(_mm_cvtsi128_si64(ohi)), q3 = uint64_t(_mm_extract_epi64(ohi, 1));
+    // Offsets are non-negative (clamped to the map), so the upper halves are the odd lanes as they stand.
+    const uint64_t off[8] = {uint32_t(q0), q0 >> 32, uint32_t(q1), q1 >> 32,
+                             uint32_t(q2), q2 >> 32, uint32_t(q3), q3 >> 32};
+    for (int r = 0; r < 2; ++r) {
+      const float* row = L.base + r * L.pitch;
+      auto pair2 = [&](int a, int b) {  // texels (off[a], off[a] + 1, off[b], off[b] + 1) of this row
+        const __m128 lo = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(row + off[a])));
+        return _mm_loadh_pi(lo, reinterpret_cast<const __m64*>(row + off[b]));
+      };
+      // Pairs of lanes (0 1 | 4 5) and (2 3 | 6 7); the even elements are the x texels, the odd ones x + 1.
+      const __m256 p01 = _mm256_insertf128_ps(_mm256_castps128_ps256(pair2(0, 1)), pair2(4, 5), 1);
+      const __m256 p23 = _mm256_insertf128_ps(_mm256_castps128_ps256(pair2(2, 3)), pair2(6, 7), 1);
+      tex[2 * r] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(2, 0, 2, 0));
+      tex[2 * r + 1] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(3, 1, 3, 1));
+    }
+  }
+}
+
 // Lanes whose pair start was clamped (i0 < 0 or i0 > W − 2, likewise j0) read the pair next to their footprint:
 // there both x taps are the edge texel. xb, yb are the clamped starts the pairs were read at.
 inline void fix_edge_taps8(const Pcf8Level& L, __m256i i0, __m256i j0, __m256i xb, __m256i yb, __m256 tex[4]) {
   const __m256i moved = _mm256_or_si256(_mm256_xor_si256(xb, i0), _mm256_xor_si256(yb, j0));
-  if (_mm256_testz_si256(moved, moved)) [[likely]]
-    return;
+  if (_mm256_testz_si256(moved, moved)) return;
   // i0 < 0: x1 is texel 0 too (the left one); i0 > W − 2: x0 is texel W − 1 too (the right one). Rows alike.
   const __m256i zero = _mm256_setzero_si256();
   const __m256i left = _mm256_cmpgt_epi32(zero, i0), right = _mm256_cmpgt_epi32(i0, L.w2);
@@ -160,14 +207,14 @@ inline void fix_edge_taps8(const Pcf8Level& L, __m256i i0, __m256i j0, __m256i x
   }
 }
 
-// The four 32-bit texels of eight bilinear footprints, as raw bits in float lanes: tex[0..3] at (x0, y0),
-// (x1, y0), (x0, y1), (x1, y1) with x0 = clamp(i0, 0, W − 1), x1 = clamp(i0 + 1, 0, W − 1) and likewise y0, y1
-// from j0. Scalar loads, much cheaper than AVX2 gathers on the machines measured: where the texture is at least
-// 2 × 2, each lane reads two 8-byte pairs at column clamp(i0, 0, W − 2) of rows clamp(j0, 0, H − 2) and the
-// next, and lanes at an edge are fixed afterwards; a texture one texel wide or high gathers.
+// The four taps of eight footprints anywhere: x0 = clamp(i0, 0, W − 1), x1 = clamp(i0 + 1, 0, W − 1) and likewise
+// y0, y1 from j0 (d24 as raw bits). Where the map is at least 2 × 2 each lane reads its pairs at column
+// clamp(i0, 0, W − 2) of rows clamp(j0, 0, H − 2) and the next, and lanes at an edge are fixed afterwards; a map
+// one texel wide or high gathers (never d16: pcf_lequal_x8 runs those lane by lane).
+template <TexelFormat F>
 inline void fetch_taps8(const Pcf8Level& L, __m256i i0, __m256i j0, __m256 tex[4]) {
   const __m256i zero = _mm256_setzero_si256(), one = _mm256_set1_epi32(1);
-  if (L.tiny) [[unlikely]] {
+  if (F != TexelFormat::d16 && L.tiny) {
     auto clamp = [&](__m256i i, __m256i m) { return _mm256_min_epi32(_mm256_max_epi32(i, zero), m); };
     const __m256i x0 = clamp(i0, L.wmax), x1 = clamp(_mm256_add_epi32(i0, one), L.wmax);
     const __m256i o0 = _mm256_mullo_epi32(clamp(j0, L.hmax), L.vpitch);
@@ -180,72 +227,60 @@ inline void fetch_taps8(const Pcf8Level& L, __m256i i0, __m256i j0, __m256 tex[4
   }
   const __m256i xb = _mm256_min_epi32(_mm256_max_epi32(i0, zero), L.w2);
   const __m256i yb = _mm256_min_epi32(_mm256_max_epi32(j0, zero), L.h2);
-  alignas(32) int32_t off[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(off), _mm256_add_epi32(_mm256_mullo_epi32(yb, L.vpitch), xb));
-  // Read the offsets back from memory (one load each) rather than letting the compiler extract them lane by lane
-  // (two instructions each, on the shuffle port the fetch needs).
-  __asm__("" : "+m"(off));
-  for (int r = 0; r < 2; ++r) {
-    const float* row = L.base + r * L.pitch;
-    auto pair2 = [&](int a, int b) {  // texels (off[a], off[a] + 1, off[b], off[b] + 1) of this row
-      const __m128 lo = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(row + off[a])));
-      return _mm_loadh_pi(lo, reinterpret_cast<const __m64*>(row + off[b]));
-    };
-    // Pairs of lanes (0 1 | 4 5) and (2 3 | 6 7); the even elements are the x0 texels, the odd ones x1.
-    const __m256 p01 = _mm256_insertf128_ps(_mm256_castps128_ps256(pair2(0, 1)), pair2(4, 5), 1);
-    const __m256 p23 = _mm256_insertf128_ps(_mm256_castps128_ps256(pair2(2, 3)), pair2(6, 7), 1);
-    tex[2 * r] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(2, 0, 2, 0));
-    tex[2 * r + 1] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(3, 1, 3, 1));
-  }
+  load_pairs8<F>(L, pair_offsets8<F>(L, xb, yb), tex);
   fix_edge_taps8(L, i0, j0, xb, yb, tex);
 }
 
-// The same four taps of a d16 map (at least 2 × 2), decoded as Texel<d16> does (code / 65535, an exact
-// conversion and a correctly rounded division): each lane's texel pair (x0, x1) is one 32-bit word, gathered
-// once per row at column clamp(i0, 0, W − 2), and lanes at an edge are fixed as for 32-bit texels.
-inline void fetch_taps8_d16(const Pcf8Level& L, __m256i i0, __m256i j0, __m256 tex[4]) {
-  const __m256i zero = _mm256_setzero_si256();
-  const __m256i xb = _mm256_min_epi32(_mm256_max_epi32(i0, zero), L.w2);
-  const __m256i yb = _mm256_min_epi32(_mm256_max_epi32(j0, zero), L.h2);
-  const __m256i off = _mm256_add_epi32(_mm256_mullo_epi32(yb, L.vpitch16), xb);  // in 16-bit texels
-  const int* base = reinterpret_cast<const int*>(L.level.data);
-  const __m256i low = _mm256_set1_epi32(0xFFFF);
-  const __m256 maxcode = _mm256_set1_ps(65535.0f);
-  for (int r = 0; r < 2; ++r) {
-    const __m256i pair = _mm256_i32gather_epi32(base, _mm256_add_epi32(off, r ? L.vpitch16 : zero), 2);
-    tex[2 * r] = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(pair, low)), maxcode);
-    tex[2 * r + 1] = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_srli_epi32(pair, 16)), maxcode);
+// The reference as compare_reference makes it (clamped to [0, 1] for the fixed-point formats), and the taps
+// turned into compare masks: all ones where the tap passes (ref <= texel). d24 taps arrive as raw bits and are
+// decoded first: the low 24 bits as a float code divided by 2^24 − 1, the same correctly rounded division as
+// Texel<d24>.
+template <TexelFormat F>
+inline __m256 reference8(__m256 ref) {
+  if constexpr (F == TexelFormat::d32f) return ref;
+  else return _mm256_min_ps(_mm256_max_ps(ref, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
+}
+template <TexelFormat F>
+inline void compare_taps8(__m256 ref, __m256 tex[4]) {
+  if constexpr (F == TexelFormat::d24) {
+    const __m256i mask = _mm256_set1_epi32(0xFFFFFF);
+    const __m256 maxcode = _mm256_set1_ps(16777215.0f);
+    for (int k = 0; k < 4; ++k)
+      tex[k] = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(_mm256_castps_si256(tex[k]), mask)), maxcode);
   }
-  fix_edge_taps8(L, i0, j0, xb, yb, tex);
+  for (int k = 0; k < 4; ++k) tex[k] = _mm256_cmp_ps(ref, tex[k], _CMP_LE_OQ);
 }
 
-// Eight lookups at (s, t, ref) per lane. A d16 map must be at least 2 × 2 (pcf_lequal_x8 sees to it).
+// The bilinear blend of four compare masks with weights a (along s) and b (along t), as reduce_compare does it.
+inline __m256 blend_taps8(const __m256 r[4], __m256 a, __m256 b) {
+  // lerp(a, r0, r1) = r0 + a · (r1 − r0) with r0, r1 in {0, 1} is exactly 0, 1, a (r0 = 0, r1 = 1) or
+  // 1 + a · (−1) = 1 − a (r0 = 1, r1 = 0): chosen by the masks, the same bits with fewer operations.
+  const __m256 onef = _mm256_set1_ps(1.0f);
+  const __m256 one_minus_a = _mm256_sub_ps(onef, a);
+  auto lerp01 = [&](__m256 m0, __m256 m1) {
+    return _mm256_blendv_ps(_mm256_and_ps(m1, a), _mm256_blendv_ps(one_minus_a, onef, m1), m0);
+  };
+  const __m256 xa = lerp01(r[0], r[1]);
+  const __m256 xb = lerp01(r[2], r[3]);
+  return _mm256_add_ps(xa, _mm256_mul_ps(b, _mm256_sub_ps(xb, xa)));
+}
+
+// Eight lookups anywhere: coordinates clamped as clamp_texel_coord does, taps at the edges fixed, taps outside
+// a border-wrapped map replaced by the border's compare. Out of line: the kernel below only calls it for groups
+// with a footprint not wholly inside the map.
 template <TexelFormat F, bool kBorderWrap>
-inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 ref, float border_depth) {
-  static_assert(F == TexelFormat::d16 || F == TexelFormat::d24 || F == TexelFormat::d32f);
+[[gnu::noinline]] inline __m256 pcf_lequal_any8(const Pcf8Level& L, __m256 s, __m256 t, __m256 ref,
+                                                float border_depth) {
   const __m256 half = _mm256_set1_ps(0.5f), lo = _mm256_set1_ps(-kMaxTexelCoord), hi = _mm256_set1_ps(kMaxTexelCoord);
   const __m256 u = _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(s, L.fwidth), half), lo), hi);
   const __m256 v = _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(t, L.fheight), half), lo), hi);
   const __m256 fu = _mm256_floor_ps(u), fv = _mm256_floor_ps(v);
   const __m256 a = _mm256_sub_ps(u, fu), b = _mm256_sub_ps(v, fv);
   const __m256i i0 = _mm256_cvttps_epi32(fu), j0 = _mm256_cvttps_epi32(fv);
-  __m256 tex[4];
-  if constexpr (F == TexelFormat::d16) fetch_taps8_d16(L, i0, j0, tex);
-  else fetch_taps8(L, i0, j0, tex);
-  if constexpr (F == TexelFormat::d16) {
-    ref = _mm256_min_ps(_mm256_max_ps(ref, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));  // compare_reference
-  } else if constexpr (F == TexelFormat::d24) {
-    // Low 24 bits as a float code, divided by 2^24 − 1 (the same correctly rounded division as Texel<d24>),
-    // and the reference clamped to [0, 1] as compare_reference does.
-    const __m256i mask = _mm256_set1_epi32(0xFFFFFF);
-    const __m256 maxcode = _mm256_set1_ps(16777215.0f);
-    for (__m256& x : tex)
-      x = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(_mm256_castps_si256(x), mask)), maxcode);
-    ref = _mm256_min_ps(_mm256_max_ps(ref, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
-  }
-  const __m256 onef = _mm256_set1_ps(1.0f);
-  __m256 r[4];  // compare masks: all ones where the tap passes (ref <= texel)
-  for (int k = 0; k < 4; ++k) r[k] = _mm256_cmp_ps(ref, tex[k], _CMP_LE_OQ);
+  __m256 r[4];
+  fetch_taps8<F>(L, i0, j0, r);
+  ref = reference8<F>(ref);
+  compare_taps8<F>(ref, r);
   if constexpr (kBorderWrap) {
     const __m256 rb = _mm256_cmp_ps(ref, _mm256_set1_ps(border_depth), _CMP_LE_OQ);
     const __m256i one = _mm256_set1_epi32(1);
@@ -260,15 +295,32 @@ inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 
                            _mm256_and_si256(ix1, iy1)};
     for (int k = 0; k < 4; ++k) r[k] = _mm256_blendv_ps(rb, r[k], _mm256_castsi256_ps(in[k]));
   }
-  // lerp(a, r0, r1) = r0 + a · (r1 − r0) with r0, r1 in {0, 1} is exactly 0, 1, a (r0 = 0, r1 = 1) or
-  // 1 + a · (−1) = 1 − a (r0 = 1, r1 = 0): chosen by the masks, the same bits with fewer operations.
-  const __m256 one_minus_a = _mm256_sub_ps(onef, a);
-  auto lerp01 = [&](__m256 m0, __m256 m1) {
-    return _mm256_blendv_ps(_mm256_and_ps(m1, a), _mm256_blendv_ps(one_minus_a, onef, m1), m0);
-  };
-  const __m256 xa = lerp01(r[0], r[1]);
-  const __m256 xb = lerp01(r[2], r[3]);
-  return _mm256_add_ps(xa, _mm256_mul_ps(b, _mm256_sub_ps(xb, xa)));
+  return blend_taps8(r, a, b);
+}
+
+// Eight lookups at (s, t, ref) per lane. The short path covers groups whose footprints all lie inside the map
+// (0 <= i0 <= W − 2 and 0 <= j0 <= H − 2): there clamp_texel_coord, the edge clamps and the border cannot change
+// a value, so they are skipped; one unsigned min per axis tests it (a negative, NaN or huge coordinate converts
+// to an index above W − 2). Any other group takes pcf_lequal_any8. A d16 map must be at least 2 × 2
+// (pcf_lequal_x8 sees to it).
+template <TexelFormat F, bool kBorderWrap>
+inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 ref, float border_depth) {
+  static_assert(F == TexelFormat::d16 || F == TexelFormat::d24 || F == TexelFormat::d32f);
+  if (F != TexelFormat::d16 && L.tiny) [[unlikely]]
+    return pcf_lequal_any8<F, kBorderWrap>(L, s, t, ref, border_depth);
+  const __m256 half = _mm256_set1_ps(0.5f);
+  const __m256 u = _mm256_sub_ps(_mm256_mul_ps(s, L.fwidth), half);
+  const __m256 v = _mm256_sub_ps(_mm256_mul_ps(t, L.fheight), half);
+  const __m256 fu = _mm256_floor_ps(u), fv = _mm256_floor_ps(v);
+  const __m256i i0 = _mm256_cvttps_epi32(fu), j0 = _mm256_cvttps_epi32(fv);
+  const __m256i xb = _mm256_min_epu32(i0, L.w2), yb = _mm256_min_epu32(j0, L.h2);
+  const __m256i moved = _mm256_or_si256(_mm256_xor_si256(xb, i0), _mm256_xor_si256(yb, j0));
+  if (!_mm256_testz_si256(moved, moved)) [[unlikely]]
+    return pcf_lequal_any8<F, kBorderWrap>(L, s, t, ref, border_depth);
+  __m256 r[4];
+  load_pairs8<F>(L, pair_offsets8<F>(L, xb, yb), r);
+  compare_taps8<F>(reference8<F>(ref), r);
+  return blend_taps8(r, _mm256_sub_ps(u, fu), _mm256_sub_ps(v, fv));
 }
 
 // Eight lookups from an array of (s, t, ref).

@@ -1,7 +1,8 @@
 // The eight-lane PCF kernel (pcf_lequal_x8, PcfKernel's SIMD form, what fragment_pair shaders call) equals the
 // scalar kernel lane by lane, bit for bit: every fast-path format and wrap, textures as views of padded targets
 // and as tightly packed storage, sizes down to one texel, coordinates inside, on texel centres, on and beyond
-// every edge and corner, and non-finite.
+// every edge and corner, and non-finite; groups wholly inside the map (the kernel's short path) and groups with
+// a single lane outside it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,6 +59,23 @@ std::vector<glm::vec3> coordinates(int w, int h, std::mt19937& rng) {
     pts.push_back(q);
   std::shuffle(pts.begin(), pts.end(), rng);  // mix edge lanes with inside lanes in one call
   while (pts.size() % 8) pts.emplace_back(0.5f, 0.5f, 0.5f);
+  // Whole groups inside the map (the kernel's short path), and groups of seven inside lanes with one lane just
+  // past an edge, far away or NaN, in every lane position: the short path's test must send those to the full one.
+  auto inside = [](int n) {  // s with 0 < s · n − 0.5 < n − 1: footprints inside (none when n < 2)
+    const float lo = 0.51f / float(n);
+    return std::uniform_real_distribution<float>(lo, std::max(lo, (float(n) - 0.51f) / float(n)));
+  };
+  auto inside_s = inside(w), inside_t = inside(h);
+  for (int k = 0; k < 800; ++k) pts.emplace_back(inside_s(rng), inside_t(rng), ref(rng));
+  const float eps = 1e-4f;
+  const glm::vec2 outside[] = {{0.5f / float(w) - eps, 0.5f},      {0.5f, 0.5f / float(h) - eps},
+                               {1.0f - 0.5f / float(w) + eps, 0.5f}, {0.5f, 1.0f - 0.5f / float(h) + eps},
+                               {3e9f, 0.5f},                        {0.5f, -3e9f},
+                               {nan, 0.5f},                         {0.5f, inf}};
+  for (glm::vec2 o : outside)
+    for (int lane = 0; lane < 8; ++lane)
+      for (int l = 0; l < 8; ++l)
+        pts.push_back(l == lane ? glm::vec3(o, ref(rng)) : glm::vec3(inside_s(rng), inside_t(rng), ref(rng)));
   return pts;
 }
 
