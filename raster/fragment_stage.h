@@ -5,6 +5,7 @@
 // paths give the same bits.
 #pragma once
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 #include "raster/depth_test.h"
@@ -175,6 +176,11 @@ struct ShadedStage {
     using simd::VecF32;
     alignas(32) static constexpr float kLaneY[8] = {0, 0, 0, 0, 1, 1, 1, 1};
     const VecF32 half = VecF32::splat(0.5f), dzdy = VecF32::splat(t.dzdy), z_offset = VecF32::splat(t.z_offset);
+    // The block's row pointers, stepped by the pitch (null without a depth target or the packed colour write).
+    using Storage = typename Traits::Storage;
+    Storage* const d = depth ? depth->row<Storage>(by) + bx : nullptr;
+    uint32_t* const c = packed ? reinterpret_cast<uint32_t*>(color->row8(by)) + bx : nullptr;
+    const ptrdiff_t dpitch = depth ? depth->pitch() : 0, cpitch = packed ? color->pitch() : 0;
     for (int p = 0; p < 4; ++p) {
       const unsigned rows = kFull ? 0xFFFFu : unsigned(mask >> (16 * p)) & 0xFFFFu;
       if (!rows) continue;
@@ -182,10 +188,10 @@ struct ShadedStage {
       PairRow row;
       row.y = VecF32::splat(float(y)) + VecF32::load(kLaneY);
       row.interp = interp.rows(row.y + half);
-      row.d0 = depth ? depth->row<typename Traits::Storage>(y) + bx : nullptr;
-      row.d1 = depth ? depth->row<typename Traits::Storage>(y + 1) + bx : nullptr;
-      row.c0 = packed ? reinterpret_cast<uint32_t*>(color->row8(y)) + bx : nullptr;
-      row.c1 = packed ? reinterpret_cast<uint32_t*>(color->row8(y + 1)) + bx : nullptr;
+      row.d0 = d ? d + 2 * p * dpitch : nullptr;
+      row.d1 = d ? row.d0 + dpitch : nullptr;
+      row.c0 = c ? c + 2 * p * cpitch : nullptr;
+      row.c1 = c ? row.c0 + cpitch : nullptr;
       for (int h = 0; h < 2; ++h) {
         const unsigned live = kFull ? 0xFFu : ((rows >> (4 * h)) & 0xFu) | (((rows >> (8 + 4 * h)) & 0xFu) << 4);
         if (!live) continue;
