@@ -141,6 +141,9 @@ struct Pcf8Level {
         pitch(int(L.row_bytes / 4)), tiny(L.width < 2 || L.height < 2) {}
 };
 
+// s · size − 0.5: the texel coordinate of footprint_2d, before clamp_texel_coord.
+inline __m256 texel_coord8(__m256 s, __m256 size) { return _mm256_sub_ps(_mm256_mul_ps(s, size), _mm256_set1_ps(0.5f)); }
+
 // Element offsets of the texel pairs starting at column xb of row yb: in 32-bit texels, or 16-bit for d16.
 template <TexelFormat F>
 inline __m256i pair_offsets8(const Pcf8Level& L, __m256i xb, __m256i yb) {
@@ -271,9 +274,9 @@ inline __m256 blend_taps8(const __m256 r[4], __m256 a, __m256 b) {
 template <TexelFormat F, bool kBorderWrap>
 [[gnu::noinline]] inline __m256 pcf_lequal_any8(const Pcf8Level& L, __m256 s, __m256 t, __m256 ref,
                                                 float border_depth) {
-  const __m256 half = _mm256_set1_ps(0.5f), lo = _mm256_set1_ps(-kMaxTexelCoord), hi = _mm256_set1_ps(kMaxTexelCoord);
-  const __m256 u = _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(s, L.fwidth), half), lo), hi);
-  const __m256 v = _mm256_min_ps(_mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(t, L.fheight), half), lo), hi);
+  const __m256 lo = _mm256_set1_ps(-kMaxTexelCoord), hi = _mm256_set1_ps(kMaxTexelCoord);
+  const __m256 u = _mm256_min_ps(_mm256_max_ps(texel_coord8(s, L.fwidth), lo), hi);
+  const __m256 v = _mm256_min_ps(_mm256_max_ps(texel_coord8(t, L.fheight), lo), hi);
   const __m256 fu = _mm256_floor_ps(u), fv = _mm256_floor_ps(v);
   const __m256 a = _mm256_sub_ps(u, fu), b = _mm256_sub_ps(v, fv);
   const __m256i i0 = _mm256_cvttps_epi32(fu), j0 = _mm256_cvttps_epi32(fv);
@@ -308,9 +311,7 @@ inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 
   static_assert(F == TexelFormat::d16 || F == TexelFormat::d24 || F == TexelFormat::d32f);
   if (F != TexelFormat::d16 && L.tiny) [[unlikely]]
     return pcf_lequal_any8<F, kBorderWrap>(L, s, t, ref, border_depth);
-  const __m256 half = _mm256_set1_ps(0.5f);
-  const __m256 u = _mm256_sub_ps(_mm256_mul_ps(s, L.fwidth), half);
-  const __m256 v = _mm256_sub_ps(_mm256_mul_ps(t, L.fheight), half);
+  const __m256 u = texel_coord8(s, L.fwidth), v = texel_coord8(t, L.fheight);
   const __m256 fu = _mm256_floor_ps(u), fv = _mm256_floor_ps(v);
   const __m256i i0 = _mm256_cvttps_epi32(fu), j0 = _mm256_cvttps_epi32(fv);
   const __m256i xb = _mm256_min_epu32(i0, L.w2), yb = _mm256_min_epu32(j0, L.h2);
