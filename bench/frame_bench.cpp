@@ -8,7 +8,7 @@
 #include <string>
 
 #include "bench/bench_common.h"
-#include "cli/frame/frame.h"
+#include "scenes/frame/frame.h"
 #include "scenes/builtin_scenes.h"
 
 int main(int argc, char** argv) {
@@ -17,11 +17,11 @@ int main(int argc, char** argv) {
   raster::Renderer renderer(opt.threads);
   const char* filters[] = {"hard", "pcf", "poisson", "early-bail"};
   for (const char* filter : filters) {
-    frame::FrameOptions o;
+    frame::FrameConfig o;
     o.width = opt.smoke ? 480 : 1920;
     o.height = opt.smoke ? 270 : 1080;
-    o.shadow_size = opt.smoke ? 512 : 2048;
-    o.filter = filter;
+    o.map_size = opt.smoke ? 512 : 2048;
+    o.filter = *shading::tech::parse_filter(filter);
     if (std::string(filter) == "poisson") o.poisson_taps = 16;
     auto* b = benchmark::RegisterBenchmark((std::string("tutorial/") + filter).c_str(), [&, o](benchmark::State& st) {
       frame::render_frame(scene, o, renderer);  // warm-up

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "bench/bench_common.h"
-#include "cli/frame/frame.h"
+#include "scenes/frame/frame.h"
 #include "scenes/builtin_scenes.h"
 
 namespace {
@@ -48,10 +48,10 @@ int main(int argc, char** argv) {
     auto scenes_for = std::make_shared<std::vector<scenes::Scene>>();
     for (int f = 0; f < (k.moving ? frames : 1); ++f)
       scenes_for->push_back(scenes::builtin_scene("projective", {f / 24.0, k.casters}));
-    frame::FrameOptions o;
+    frame::FrameConfig o;
     o.width = width;
     o.height = height;
-    o.projective_mode = k.mode;
+    o.params["projective_mode"] = std::string(k.mode);
     o.export_maps = false;
     auto* b = benchmark::RegisterBenchmark(k.name().c_str(), [&, c, o, scenes_for](benchmark::State& st) {
       frame::FrameCache cache;

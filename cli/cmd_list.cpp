@@ -1,7 +1,8 @@
-// `shadowlab list`: the built-in scenes, shadow techniques, filters and bias modes, one line each with a
-// one-line description, from the name tables the scene module keeps.
+// `shadowlab list`: the built-in scenes, shadow techniques (with the light types each serves, whether it is
+// built, and its parameters), filters, bias modes and depth formats, from the vocabulary's tables.
 #include <cstdio>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "cli/cli_common.h"
@@ -27,10 +28,24 @@ Command add_list_command(CLI::App& parent) {
   return {app, [] {
             for (const scenes::BuiltinInfo& s : scenes::list_builtin_scenes())
               print_line("scene", s.name, s.description);
-            print_table("technique", scenes::technique_names());
+            for (const shading::tech::TechniqueInfo& t : shading::tech::kTechniques) {
+              std::string line = std::string(t.description) + " [lights: " + shading::tech::light_names(t.lights) +
+                                 (t.built ? "]" : "; not built yet]");
+
+              print_line("technique", t.name, line);
+            }
             print_table("filter", scenes::filter_names());
             print_table("bias", scenes::bias_mode_names());
             print_table("format", scenes::depth_format_names());
+            for (const shading::tech::TechniqueInfo& t : shading::tech::kTechniques)
+              for (const shading::tech::ParamSpec& p : t.params)
+                print_line("param", p.key,
+                           std::string(p.help) + " (" + std::string(p.option) +
+                               ", default " + std::string(p.fallback) + ")");
+            for (const shading::tech::ParamSpec& p : shading::tech::kFilterParams)
+              print_line("param", p.key,
+                         "every technique with a map: " + std::string(p.help) + " (" + std::string(p.option) +
+                             ", default " + std::string(p.fallback) + ")");
             return 0;
           }};
 }

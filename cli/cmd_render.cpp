@@ -1,28 +1,27 @@
-// `shadowlab render SCENE`: a whole frame (every light's shadow maps, then the shaded camera view) through
-// cli/frame, written as a PNG, with every shadow map as EXR on request and per-frame statistics with --stats.
+// `shadowlab render SCENE`: a whole frame through the scenes/frame library, written as a PNG, with every shadow
+// map as EXR on request and per-frame statistics with --stats. This file only turns arguments into a
+// frame::FrameConfig: the technique parameters' options come from the vocabulary's ParamSpec lists.
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "cli/cli_common.h"
-#include "scenes/builtin_scenes.h"
-#include "scenes/shadow_settings.h"
-#ifdef SHADOWLAB_HAVE_FRAME
-#include "cli/frame/frame.h"
-#include "cli/frame/frame_omni.h"
 #include "raster/renderer.h"
+#include "scenes/builtin_scenes.h"
+#include "scenes/frame/frame.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/png_frame.h"
-#endif
+#include "scenes/shadow_settings.h"
 
 namespace cli {
 namespace {
 
 struct RenderArgs {
   std::string scene;
-  std::string technique, filter, bias, size = "1280x720", maps, out = "frame.png";
+  std::string technique, filter, bias, depth_format, size = "1280x720", maps, out = "frame.png";
   long long shadow_size = 0;
   CLI::Option* shadow_size_option = nullptr;  // given or not
   int threads = -1;
@@ -30,18 +29,53 @@ struct RenderArgs {
   bool stats = false;
   std::optional<bool> cull_front;  // --cull-front / --no-cull-front
   int poisson_taps = 0;            // 0: the light's setting
-  std::optional<bool> pcf_taps;    // --pcf-taps / --no-pcf-taps
-  std::string projective_mode;              // --projective-mode; empty: the light's setting
-  std::optional<int> projective_textures;   // --projective-textures
-  bool animate = false;                     // --animate: rebuild an animated built-in scene per frame
-  double fps = 24.0;                        // --fps: frame K is at time K / fps
-  std::string stratify, fit;
-  std::optional<bool> seamless;               // --seamless / --no-seamless (cube)
-  std::string paraboloid_pack, split_plane;  // paraboloid: float | rgba8; light | x | -y | ... | a,b,c
+  bool animate = false;            // --animate: rebuild an animated built-in scene per frame
+  double fps = 24.0;               // --fps: frame K is at time K / fps
   // Value overrides, set only when given on the command line.
   std::optional<float> poisson_spread, bias_constant, bias_slope, bias_slope_max, offset_factor, offset_units,
       normal_offset;
+  // Technique parameters by key (vocabulary.h), set only when given.
+  std::map<std::string, shading::tech::ParamValue> params;
 };
+
+// Every technique parameter once (the filter parameters and each built technique's own), in table order.
+std::vector<const shading::tech::ParamSpec*> all_params() {
+  std::vector<const shading::tech::ParamSpec*> out;
+  auto add = [&](std::span<const shading::tech::ParamSpec> list) {
+    for (const auto& p : list) {
+      bool seen = false;
+      for (const auto* q : out) seen |= q->key == p.key;
+      if (!seen) out.push_back(&p);
+    }
+  };
+  add(shading::tech::kFilterParams);
+  for (const shading::tech::TechniqueInfo& t : shading::tech::kTechniques)
+    if (t.built) add(t.params);
+  return out;
+}
+
+// The command-line option of a library field named at the start of a FrameError, for messages.
+std::string option_for_field(const std::string& field) {
+  static const std::map<std::string, std::string> kFields = {
+      {"size", "--size"},
+      {"camera", "--camera"},
+      {"technique", "--technique"},
+      {"map_size", "--shadow-size"},
+      {"poisson_taps", "--poisson-taps"},
+      {"poisson_spread", "--poisson-spread"},
+      {"bias.constant", "--bias-constant"},
+      {"bias.slope", "--bias-slope"},
+      {"bias.slope_max", "--bias-slope-max"},
+      {"bias.offset_factor", "--offset-factor"},
+      {"bias.offset_units", "--offset-units"},
+      {"bias.normal_offset", "--normal-offset"},
+  };
+  if (const auto it = kFields.find(field); it != kFields.end()) return it->second;
+  if (field.rfind("params.", 0) == 0)
+    for (const auto* p : all_params())
+      if (field == "params." + std::string(p->key)) return std::string(p->option);
+  return field;
+}
 
 // A float option that stays unset unless given (CLI11 checks that the text is a number).
 void add_value(CLI::App* app, const char* name, std::optional<float>& target, const char* help) {
@@ -62,16 +96,24 @@ int run_render(const RenderArgs& a) {
              scenes::technique_names());
   check_name(a.filter, "--filter", "filter", scenes::parse_filter(a.filter).has_value(), scenes::filter_names());
   check_name(a.bias, "--bias", "bias mode", scenes::parse_bias_mode(a.bias).has_value(), scenes::bias_mode_names());
+  check_name(a.depth_format, "--depth-format", "depth format", scenes::parse_depth_format(a.depth_format).has_value(),
+             scenes::depth_format_names());
+  if (!a.technique.empty() && !shading::tech::info(*scenes::parse_technique(a.technique)).built)
+    throw CliError("--technique", "technique " + a.technique + " is not built yet");
   if (a.poisson_taps != 0 && a.poisson_taps != 4 && a.poisson_taps != 16)
     throw CliError("--poisson-taps", std::to_string(a.poisson_taps) + " is not 4 or 16");
   const std::optional<int> shadow_size =
       a.shadow_size_option->count() ? std::optional<int>(check_side(a.shadow_size, "--shadow-size")) : std::nullopt;
   if (a.threads < -1) throw CliError("--threads", "expected 0 or more threads");
   if (a.frames < 1) throw CliError("--frames", "expected 1 or more frames");
-  if (!a.projective_mode.empty() && a.projective_mode != "multipass" && a.projective_mode != "single-pass")
-    throw CliError("--projective-mode", "unknown mode '" + a.projective_mode + "' (known: multipass, single-pass)");
-  if (a.projective_textures && (*a.projective_textures < 1 || *a.projective_textures > 8))
-    throw CliError("--projective-textures", std::to_string(*a.projective_textures) + " is outside 1..8");
+  for (const auto& [key, value] : a.params)
+    for (const auto* p : all_params())
+      if (p->key == key)
+        for (const shading::tech::TechniqueInfo& t : shading::tech::kTechniques)
+          if (shading::tech::find_param(t.id, key)) {
+            if (auto why = shading::tech::param_problem(t.id, key, value)) throw CliError(std::string(p->option), *why);
+            break;
+          }
   if (a.animate) {
     if (!std::isfinite(a.fps) || !(a.fps > 0.0)) throw CliError("--fps", "expected a frame rate above 0");
     bool animated = false;
@@ -80,8 +122,6 @@ int run_render(const RenderArgs& a) {
       for (const scenes::BuiltinInfo& b : scenes::list_builtin_scenes()) animated |= b.name == a.scene && b.animated;
     if (!animated) throw CliError("--animate", "'" + a.scene + "' is not an animated built-in scene (animated: projective)");
   }
-  if (!a.paraboloid_pack.empty() && a.paraboloid_pack != "float" && a.paraboloid_pack != "rgba8")
-    throw CliError("--paraboloid-pack", "unknown value '" + a.paraboloid_pack + "' (known: float, rgba8)");
   if (lower_extension(a.out) != ".png") throw CliError("--out", "expected a .png file name");
   check_output_dir(a.out, "--out");
   if (!a.maps.empty()) {
@@ -91,39 +131,25 @@ int run_render(const RenderArgs& a) {
   }
 
   scenes::Scene scene = load_scene_or_builtin(a.scene);
-#ifndef SHADOWLAB_HAVE_FRAME
-  (void)scene, (void)size, (void)shadow_size;
-  throw CliError("render", "this build of shadowlab has no frame renderer (cli/frame was not built)");
-#else
-  frame::FrameOptions options;
-  options.width = size.width;
-  options.height = size.height;
-  if (!a.technique.empty()) options.technique = a.technique;
-  if (!a.filter.empty()) options.filter = a.filter;
-  if (!a.bias.empty()) options.bias = a.bias;
-  options.shadow_size = shadow_size;
-  options.cull_front = a.cull_front;
-  options.pcf_taps = a.pcf_taps;
-  if (a.poisson_taps != 0) options.poisson_taps = a.poisson_taps;
-  if (!a.stratify.empty()) options.stratify = a.stratify;
-  if (!a.fit.empty()) options.fit = a.fit;
-  options.poisson_spread = a.poisson_spread;
-  options.bias_constant = a.bias_constant;
-  options.bias_slope = a.bias_slope;
-  options.bias_slope_max = a.bias_slope_max;
-  options.offset_factor = a.offset_factor;
-  options.offset_units = a.offset_units;
-  options.normal_offset = a.normal_offset;
-  if (!a.projective_mode.empty()) options.projective_mode = a.projective_mode;
-  options.projective_textures = a.projective_textures;
-  options.export_maps = !a.maps.empty();  // projective maps become EXR records only when written
-  options.seamless = a.seamless;
-  if (!a.paraboloid_pack.empty()) options.paraboloid_pack = a.paraboloid_pack;
-  if (!a.split_plane.empty()) {
-    if (a.split_plane != "light" && !frame::parse_split_plane(a.split_plane))
-      throw CliError("--split-plane", "'" + a.split_plane + "' is not light, x, y, z, -x, -y, -z or a non-zero normal a,b,c");
-    options.split_plane = a.split_plane;
-  }
+  frame::FrameConfig config;
+  config.width = size.width;
+  config.height = size.height;
+  if (!a.technique.empty()) config.technique = scenes::parse_technique(a.technique);
+  if (!a.filter.empty()) config.filter = scenes::parse_filter(a.filter);
+  if (!a.bias.empty()) config.bias = scenes::parse_bias_mode(a.bias);
+  if (!a.depth_format.empty()) config.depth_format = scenes::parse_depth_format(a.depth_format);
+  config.map_size = shadow_size;
+  config.cull_front = a.cull_front;
+  if (a.poisson_taps != 0) config.poisson_taps = a.poisson_taps;
+  config.poisson_spread = a.poisson_spread;
+  config.bias_constant = a.bias_constant;
+  config.bias_slope = a.bias_slope;
+  config.bias_slope_max = a.bias_slope_max;
+  config.offset_factor = a.offset_factor;
+  config.offset_units = a.offset_units;
+  config.normal_offset = a.normal_offset;
+  config.params = a.params;
+  config.export_maps = !a.maps.empty();  // projective maps become EXR records only when written
 
   raster::Renderer renderer(a.threads);
   Progress progress;
@@ -133,7 +159,14 @@ int run_render(const RenderArgs& a) {
     if (a.animate && i > 0) scene = scenes::builtin_scene(a.scene, {double(i) / a.fps});
     if (a.frames > 1) progress.update("frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames));
     const Stopwatch watch;
-    result.emplace(frame::render_frame(scene, options, renderer, &cache));
+    try {
+      result.emplace(frame::render_frame(scene, config, renderer, &cache));
+    } catch (const frame::FrameError& e) {
+      const std::string what = e.what();
+      const size_t colon = what.find(": ");
+      if (colon == std::string::npos) throw;
+      throw CliError(option_for_field(what.substr(0, colon)), what.substr(colon + 2));
+    }
     const double total = watch.ms();
     if (a.stats) {
       const frame::FrameStats& s = result->stats;
@@ -153,14 +186,11 @@ int run_render(const RenderArgs& a) {
     std::error_code ec;
     std::filesystem::create_directories(a.maps, ec);
     if (ec) throw CliError("--maps", "cannot create directory " + a.maps + " (" + ec.message() + ")");
-    for (size_t m = 0; m < result->maps.size(); ++m) {
-      const std::string name = m < result->map_names.size() ? result->map_names[m] : "map" + std::to_string(m);
-      scenes::io::write_exr_map(std::filesystem::path(a.maps) / (name + ".exr"), result->maps[m]);
-    }
+    for (const frame::NamedMap& m : frame::export_maps(*result))
+      scenes::io::write_exr_map(std::filesystem::path(a.maps) / (m.name + ".exr"), m.map);
   }
   scenes::io::write_png(a.out, result->color);
   return 0;
-#endif
 }
 
 }  // namespace
@@ -182,10 +212,6 @@ Command add_render_command(CLI::App& parent) {
   app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
   app->add_flag_callback("--no-cull-front", [args] { args->cull_front = false; }, "Render front faces into the maps");
   app->add_option("--poisson-taps", args->poisson_taps, "Poisson filters: 4 or 16 taps");
-  app->add_flag_callback("--pcf-taps", [args] { args->pcf_taps = true; }, "Poisson taps are hardware-PCF lookups");
-  app->add_flag_callback("--no-pcf-taps", [args] { args->pcf_taps = false; }, "Poisson taps are single compares");
-  app->add_option("--stratify", args->stratify, "Stratified Poisson seed: pixel or world (position rounded to 1 mm)");
-  app->add_option("--fit", args->fit, "Directional light box: auto (fitted to receivers and casters) or fixed");
   RenderArgs& r = *args;
   add_value(app, "--poisson-spread", r.poisson_spread, "Poisson disc radius in map texture coordinates (1/700)");
   add_value(app, "--bias-constant", r.bias_constant, "constant bias: window depth subtracted (0.005)");
@@ -194,18 +220,28 @@ Command add_render_command(CLI::App& parent) {
   add_value(app, "--offset-factor", r.offset_factor, "offset bias: glPolygonOffset factor (1.1)");
   add_value(app, "--offset-units", r.offset_units, "offset bias: glPolygonOffset units (4)");
   add_value(app, "--normal-offset", r.normal_offset, "normal bias: receiver moved along its normal, metres (0.02)");
-  app->add_flag_callback("--seamless", [args] { args->seamless = true; }, "Cube maps: seamless filtering (default)");
-  app->add_flag_callback("--no-seamless", [args] { args->seamless = false; }, "Cube maps: each face filtered alone");
-  app->add_option("--paraboloid-pack", args->paraboloid_pack,
-                  "Paraboloid depth storage: float (default) or rgba8 (base-256 pack into an RGBA8 target)");
-  app->add_option("--split-plane", args->split_plane,
-                  "Paraboloid split plane normal: light (its direction, default), x, y, z, -x, -y, -z or a,b,c");
   app->add_option("--maps", args->maps, "Also write every shadow map as DIR/<map name>.exr");
-  app->add_option("--projective-mode", args->projective_mode,
-                  "Projective shadows: multipass (a multiply pass per caster) or single-pass");
-  app->add_option_function<int>(
-      "--projective-textures", [args](const int& v) { args->projective_textures = v; },
-      "Projective single-pass: shadow textures per draw, 1..8 (more casters: extra passes)");
+  app->add_option("--depth-format", args->depth_format, "Depth format of every light's maps (see list)");
+  // The technique parameters (vocabulary.h): one option each, flags with a --no- form.
+  for (const shading::tech::ParamSpec* p : all_params()) {
+    const std::string key(p->key), option(p->option), help = std::string(p->help) + " (default " +
+                                                             std::string(p->fallback) + ")";
+    switch (p->kind) {
+      case shading::tech::ParamKind::flag:
+        app->add_flag_callback(option, [args, key] { args->params[key] = true; }, help);
+        app->add_flag_callback("--no-" + option.substr(2), [args, key] { args->params[key] = false; }, "");
+        break;
+      case shading::tech::ParamKind::number:
+      case shading::tech::ParamKind::integer:
+        app->add_option_function<double>(option, [args, key](const double& v) { args->params[key] = v; }, help);
+        break;
+      case shading::tech::ParamKind::choice:
+      case shading::tech::ParamKind::text:
+        app->add_option_function<std::string>(option, [args, key](const std::string& v) { args->params[key] = v; },
+                                              help);
+        break;
+    }
+  }
   app->add_flag("--animate", args->animate, "Animated built-in scenes (projective): frame K at time K / fps");
   app->add_option("--fps", args->fps, "Frame rate of --animate (default 24)");
   return {app, [args] { return run_render(*args); }};

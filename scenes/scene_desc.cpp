@@ -68,20 +68,17 @@ std::optional<Problem> light_problem(const Light& l) {
   if (!(l.inner_cone_deg >= 0.0f && l.inner_cone_deg <= l.outer_cone_deg && l.outer_cone_deg < 90.0f))
     return Problem{"", "needs 0 <= inner_cone <= outer_cone < 90 degrees"};
   if (!(l.range >= 0.0f)) return Problem{"range", "must not be negative"};
-  if (!technique_supports(l.shadow.technique, l.type)) {
+  if (const std::string why = shading::tech::refusal(l.shadow.technique, l.type); !why.empty()) {
     std::string ok;
-    for (const NamedEntry& e : technique_names()) {
-      if (!technique_supports(*parse_technique(e.name), l.type)) continue;
+    for (const shading::tech::TechniqueInfo& t : shading::tech::kTechniques) {
+      if (!t.built || !technique_supports(t.id, l.type)) continue;
       if (!ok.empty()) ok += ", ";
-      ok += e.name;
+      ok += t.name;
     }
-    std::string message = "'";
-    message += to_string(l.shadow.technique);
-    message += "' cannot serve a ";
-    message += to_string(l.type);
-    message += " light (use: " + ok + ")";
-    return Problem{"shadow.technique", message};
+    return Problem{"shadow.technique", why + " (use: " + ok + ")"};
   }
+  for (const auto& [key, value] : l.shadow.params)
+    if (auto why = param_problem(l.shadow.technique, key, value)) return Problem{"shadow.params." + key, *why};
   const ShadowSettings& s = l.shadow;
   if (s.map_size < 1 || s.map_size > 16384) return Problem{"shadow.map_size", "must be between 1 and 16384"};
   if (s.poisson_taps != 4 && s.poisson_taps != 16) return Problem{"shadow.poisson_taps", "expected 4 or 16"};

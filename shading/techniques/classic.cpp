@@ -21,7 +21,7 @@ ShadowMapSet plan_classic_map(const ClassicLight& light, const ClassicSettings& 
 DepthPassOptions classic_depth_options(const ClassicSettings& s) {
   DepthPassOptions o;
   o.cull_front = s.cull_front;
-  if (s.bias.kind == BiasKind::offset) o.offset = raster::PolygonOffset{s.bias.offset_factor, s.bias.offset_units};
+  if (s.bias.mode == BiasMode::offset) o.offset = raster::PolygonOffset{s.bias.offset_factor, s.bias.offset_units};
   return o;
 }
 
@@ -40,6 +40,60 @@ ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& l
   r.filter = s.filter_params;
   r.maps = map_lookups(tex, Wrap::clamp_to_border);  // outside a directional map: border depth 1, lit
   return r;
+}
+
+namespace {
+
+// The classic map as a LightShadow: planned at construction, its reader made once the map is built.
+class ClassicShadow final : public LightShadow {
+ public:
+  ClassicShadow(const ClassicLight& light, const ClassicSettings& settings, const ClassicFit& fit)
+      : light_(light), settings_(settings), set_(plan_classic_map(light, settings, fit)) {}
+
+  raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& c) override {
+    const raster::DrawStats stats =
+        build_maps(renderer, set_, c.positions, c.indices, classic_depth_options(settings_));
+    reader_ = make_classic_reader(set_, light_, settings_);
+    return stats;
+  }
+  void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const override {
+    classic_visibility(reader_, q, vis);
+  }
+  void visibility_x8(std::span<const ShadowQuery> q, std::span<float> vis) const override {
+    classic_visibility_x8(reader_, q, vis);
+  }
+  std::vector<MapRecord> maps() const override {
+    const ShadowPass& p = set_.passes.at(0);
+    MapRecord m;
+    m.target = set_.targets.at(p.target).get();
+    m.technique = to_string(Technique::shadowmap);
+    m.encoding = info(Technique::shadowmap).encoding;
+    m.world_to_camera = p.view;
+    m.world_to_ndc = p.proj * p.view;
+    return {m};
+  }
+
+ private:
+  ClassicLight light_;
+  ClassicSettings settings_;
+  ShadowMapSet set_;
+  ClassicReader reader_;
+};
+
+}  // namespace
+
+std::unique_ptr<LightShadow> plan_classic(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {
+  ClassicLight l;
+  l.kind = light.type == LightType::spot ? LightKind::spot : LightKind::directional;
+  l.position = light.position;
+  l.direction = light.direction;
+  l.outer_angle = light.outer_angle;
+  l.range = light.range;
+  const ClassicSettings s{c.filter, c.filter_params, c.bias, c.cull_front, c.map_size, c.depth_format};
+  ClassicFit fit{in.receivers, in.casters, std::nullopt};
+  if (Params(c).text("fit") == "fixed")
+    fit.fixed = fixed_directional(l.direction, glm::vec3(0.0f), {10.0f, 10.0f}, -10.0f, 20.0f);
+  return std::make_unique<ClassicShadow>(l, s, fit);
 }
 
 }  // namespace shading::tech

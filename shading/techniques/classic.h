@@ -18,9 +18,23 @@
 #include "shading/techniques/shadow_filters.h"
 #include "shading/techniques/shadow_filters_x8.h"
 #include "shading/techniques/shadow_map_set.h"
-#include "shading/techniques/technique_types.h"
+#include "shading/techniques/technique.h"
+#include "shading/techniques/vocabulary.h"
 
 namespace shading::tech {
+
+// The projection a classic map is built with: orthographic (directional) or perspective (spot).
+enum class LightKind : uint8_t { directional, spot };
+
+// Everything the classic technique needs from a light's settings.
+struct ClassicSettings {
+  FilterKind filter = FilterKind::pcf;
+  FilterParams filter_params;
+  BiasParams bias;
+  bool cull_front = false;  // render back faces only into the map (glCullFace(GL_FRONT))
+  int map_size = 1024;
+  raster::DepthFormat depth_format = raster::DepthFormat::d16;
+};
 
 // The light as the technique sees it.
 struct ClassicLight {
@@ -61,9 +75,9 @@ ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& l
 
 // The depth bias subtracted from the reference for a receiver with cos(angle to the light) = ndotl.
 inline float depth_bias(const BiasParams& b, float ndotl) {
-  switch (b.kind) {
-    case BiasKind::constant: return b.constant;
-    case BiasKind::slope: {
+  switch (b.mode) {
+    case BiasMode::constant: return b.constant;
+    case BiasMode::slope: {
       const float c = ndotl < 0.0f ? 0.0f : (ndotl > 1.0f ? 1.0f : ndotl);
       const float v = b.slope * std::tan(std::acos(c));
       return v < 0.0f ? 0.0f : (v > b.slope_max ? b.slope_max : v);
@@ -78,7 +92,7 @@ inline bool classic_context(const ClassicReader& r, glm::vec3 p, glm::vec3 n, gl
   const glm::vec3 to_light = r.kind == LightKind::spot ? glm::normalize(r.position - p) : -r.direction;
   const float ndotl = glm::dot(n, to_light);
   glm::vec3 q = p;
-  if (r.bias.kind == BiasKind::normal) q = p + n * r.bias.normal_offset;
+  if (r.bias.mode == BiasMode::normal) q = p + n * r.bias.normal_offset;
   const glm::vec4 c = r.shadow * glm::vec4(q, 1.0f);
   const float b = depth_bias(r.bias, ndotl);
   ctx = SampleContext{glm::vec2(c.x, c.y), c.z - b, frag, p};
@@ -128,5 +142,9 @@ inline void classic_visibility_x8(const ClassicReader& r, std::span<const Shadow
                   [&]<class F, bool kPcf>() { filter_lanes<F, kPcf>(r.maps, b, r.filter).store(out); });
   for (int l = 0; l < b.count; ++l) vis[point_of[size_t(l)]] = out[l];
 }
+
+// The registry's factory (technique.h): a directional light's box is fitted to in.receivers and in.casters, or
+// is the tutorial's fixed box around the origin with the parameter fit = fixed.
+std::unique_ptr<LightShadow> plan_classic(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
 
 }  // namespace shading::tech

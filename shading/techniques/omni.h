@@ -19,7 +19,7 @@
 #include "shading/texture_cube.h"
 #include "shading/techniques/shadow_filters.h"
 #include "shading/techniques/shadow_map_set.h"
-#include "shading/techniques/technique_types.h"
+#include "shading/techniques/vocabulary.h"
 
 namespace shading::tech {
 
@@ -95,16 +95,16 @@ struct OmniRef {
 };
 inline OmniRef omni_ref(const OmniReader& r, glm::vec3 p, glm::vec3 n) {
   OmniRef o{p, 0.0f};
-  if (r.bias.kind == BiasKind::normal) {
+  if (r.bias.mode == BiasMode::normal) {
     o.q = p + n * r.bias.normal_offset;
     return o;
   }
   const glm::vec3 l = r.position - p;
   const float len = glm::length(l);
   const float ndotl = len > 0.0f ? glm::dot(n, l) / len : 1.0f;
-  switch (r.bias.kind) {
-    case BiasKind::constant: o.bias = r.bias.constant; break;
-    case BiasKind::slope: {
+  switch (r.bias.mode) {
+    case BiasMode::constant: o.bias = r.bias.constant; break;
+    case BiasMode::slope: {
       const float c = ndotl < 0.0f ? 0.0f : (ndotl > 1.0f ? 1.0f : ndotl);
       const float v = r.bias.slope * std::tan(std::acos(c));
       o.bias = v < 0.0f ? 0.0f : (v > r.bias.slope_max ? r.bias.slope_max : v);

@@ -11,7 +11,7 @@
 
 #include "shading/shadow_lookup.h"
 #include "shading/techniques/poisson.h"
-#include "shading/techniques/technique_types.h"
+#include "shading/techniques/vocabulary.h"
 
 namespace shading::tech {
 

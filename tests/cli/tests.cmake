@@ -6,11 +6,3 @@ if(TARGET shadowlab)
   list(APPEND SHADOWLAB_TEST_DEFINITIONS SHADOWLAB_CLI="$<TARGET_FILE:shadowlab>")
   list(APPEND SHADOWLAB_TEST_LIBS shadowlab::io shadowlab::scenes)
 endif()
-# Whole-frame rendering of every built-in scene (cli/frame/).
-if(TARGET shadowlab::frame)
-  list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/frame/builtin_render_test.cpp
-       ${CMAKE_CURRENT_LIST_DIR}/frame/frame_lights_test.cpp
-       ${CMAKE_CURRENT_LIST_DIR}/frame/camera_pair_test.cpp
-       ${CMAKE_CURRENT_LIST_DIR}/frame/projective_frame_test.cpp)
-  list(APPEND SHADOWLAB_TEST_LIBS shadowlab::frame)
-endif()

@@ -98,8 +98,16 @@ TEST(SceneErrors, UnknownNames) {
             "scene.json: lights[0].shadow.bias.mode: unknown bias mode 'huge' (known: none, constant, slope, offset, "
             "normal)");
   EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"technique": "cube"}}]})"),
-            "scene.json: lights[0].shadow.technique: 'cube' cannot serve a directional light (use: none, shadowmap, "
-            "projective, cascades, lispsm, frustum-faces)");
+            "scene.json: lights[0].shadow.technique: technique cube does not serve directional lights (it serves: "
+            "point, hemispherical) (use: none, shadowmap, projective)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"technique": "cascades"}}]})"),
+            "scene.json: lights[0].shadow.technique: technique cascades is not built yet (use: none, shadowmap, "
+            "projective)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "shadow": {"technique": "cube", "params": {"fit": "auto"}}}]})"),
+            "scene.json: lights[0].shadow.params.fit: technique cube takes no parameter 'fit' (it takes: seamless, "
+            "pcf_taps, stratify)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "shadow": {"params": {"seamless": 1}}}]})"),
+            "scene.json: lights[0].shadow.params.seamless: expected true or false");
   EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "shadow": {"poisson_taps": 8}}]})"),
             "scene.json: lights[0].shadow.poisson_taps: expected 4 or 16");
   EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"}, "material": "gold"}]})"),

@@ -38,7 +38,10 @@ scenes::Light every_light_field(scenes::LightType type, scenes::ShadowTechnique 
   s.depth_format = scenes::DepthFormat::d32f;
   s.poisson_taps = 16;
   s.poisson_spread = 1.0f / 300.0f;
-  s.params = {{"cascades", 4.0}, {"split", 0.1}, {"stable", true}, {"fit", std::string("sphere")}};
+  // A parameter of every kind the technique takes, away from its default.
+  if (shading::tech::info(technique).reads_filter) s.params = {{"pcf_taps", true}, {"stratify", std::string("world")}};
+  if (technique == scenes::ShadowTechnique::shadowmap) s.params["fit"] = std::string("fixed");
+  if (technique == scenes::ShadowTechnique::projective) s.params = {{"max_textures", 6.0}, {"caster_shade", 0.25}};
   return l;
 }
 
@@ -108,7 +111,7 @@ scenes::SceneDesc every_field(const std::string& gltf_path) {
   ortho.projection = Orthographic{-4, 5, -6, 7, -8, 9};
   d.cameras = {persp, ortho};
 
-  d.lights = {every_light_field(LightType::directional, ShadowTechnique::cascades),
+  d.lights = {every_light_field(LightType::directional, ShadowTechnique::shadowmap),
               every_light_field(LightType::spot, ShadowTechnique::projective),
               every_light_field(LightType::point, ShadowTechnique::paraboloid),
               every_light_field(LightType::hemispherical, ShadowTechnique::pyramid)};

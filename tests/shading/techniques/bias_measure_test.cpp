@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "cli/frame/camera_shader.h"
-#include "cli/frame/frame_lights.h"
+#include "scenes/frame/camera_shader.h"
+#include "scenes/frame/frame_lights.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/camera_math.h"
 #include "scenes/scene_queries.h"
@@ -85,7 +85,7 @@ struct Built {
   tech::ClassicReader reader;
 };
 
-Built build(raster::Renderer& r, const scenes::Scene& scene, const glm::mat4& vp, const frame::FrameOptions& o) {
+Built build(raster::Renderer& r, const scenes::Scene& scene, const glm::mat4& vp, const frame::FrameConfig& o) {
   const frame::ResolvedLight rl = frame::resolve_light(scene.lights[0], o);
   tech::ClassicFit fit;
   fit.casters = tech::Box{scenes::scene_bounds(scene, scenes::InstanceFilter::casters).min,
@@ -146,12 +146,12 @@ TEST(BiasMeasure, TutorialAcneAndPeterPanning) {
   int acne_by_bias[5] = {};
   for (bool cull_front : {false, true})
     for (int bi = 0; bi < 5; ++bi) {
-      frame::FrameOptions o;
+      frame::FrameConfig o;
       o.width = W;
       o.height = H;
-      o.shadow_size = 1024;
-      o.filter = "hard";
-      o.bias = kBiases[bi];
+      o.map_size = 1024;
+      o.filter = *shading::tech::parse_filter("hard");
+      o.bias = *shading::tech::parse_bias_mode(kBiases[bi]);
       o.cull_front = cull_front;
       const Built b = build(r, scene, vp, o);
       int acne = 0, lit = 0;

@@ -24,10 +24,10 @@ ClassicFit fixed_fit() {
   return f;
 }
 
-ClassicSettings settings(FilterKind filter, BiasKind bias) {
+ClassicSettings settings(FilterKind filter, BiasMode bias) {
   ClassicSettings s;
   s.filter = filter;
-  s.bias.kind = bias;
+  s.bias.mode = bias;
   s.map_size = kMap;
   return s;
 }
@@ -44,7 +44,7 @@ const ClassicLight kSun{LightKind::directional, {0, 0, 0}, {0, -1, 0}};
 
 TEST(ClassicAnalytic, SquareOccluderShadowAreaInTexels) {
   raster::Renderer r(testsupport::test_threads());
-  const auto b = techtest::build_classic(r, floor_and_square(), kSun, settings(FilterKind::hard, BiasKind::constant),
+  const auto b = techtest::build_classic(r, floor_and_square(), kSun, settings(FilterKind::hard, BiasMode::constant),
                                          fixed_fit());
   int shadowed = 0;
   for (int j = 0; j < kMap; ++j)
@@ -59,7 +59,7 @@ TEST(ClassicAnalytic, SquareOccluderShadowAreaInTexels) {
 
 TEST(ClassicAnalytic, PcfAcrossStraightEdgeIsOneTexelRamp) {
   raster::Renderer r(testsupport::test_threads());
-  const auto b = techtest::build_classic(r, floor_and_square(), kSun, settings(FilterKind::pcf, BiasKind::constant),
+  const auto b = techtest::build_classic(r, floor_and_square(), kSun, settings(FilterKind::pcf, BiasMode::constant),
                                          fixed_fit());
   // Walk along x through the occluder's left edge (x = −1) at z = 0.3.
   const int steps = 400;
@@ -83,7 +83,7 @@ TEST(ClassicAnalytic, PcfAcrossStraightEdgeIsOneTexelRamp) {
 }
 
 // A plane through the origin tilted 60° about z (N·L = 0.5 under a light straight down), lit everywhere.
-int acne_on_slope(BiasKind bias, int* samples) {
+int acne_on_slope(BiasMode bias, int* samples) {
   raster::Renderer r(testsupport::test_threads());
   const float t = std::tan(glm::radians(60.0f));
   techtest::Soup s;
@@ -103,8 +103,8 @@ int acne_on_slope(BiasKind bias, int* samples) {
 
 TEST(ClassicAnalytic, SlopeBiasRemovesAcneOnSlope) {
   int samples = 0;
-  const int none = acne_on_slope(BiasKind::none, &samples);
-  const int slope = acne_on_slope(BiasKind::slope, &samples);
+  const int none = acne_on_slope(BiasMode::none, &samples);
+  const int slope = acne_on_slope(BiasMode::slope, &samples);
   std::printf("slope plane: %d of %d points in false shadow without bias, %d with slope bias\n", none, samples, slope);
   EXPECT_GT(none, samples / 5);
   EXPECT_EQ(slope, 0);

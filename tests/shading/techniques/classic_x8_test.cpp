@@ -50,10 +50,10 @@ std::vector<tech::ShadowQuery> random_points(bool spot, std::mt19937& rng, size_
   return q;
 }
 
-tech::ClassicReader reader(const shading::Texture2D& tex, shading::Wrap wrap, bool spot, tech::BiasKind bias) {
+tech::ClassicReader reader(const shading::Texture2D& tex, shading::Wrap wrap, bool spot, tech::BiasMode bias) {
   tech::ClassicReader r;
   r.maps = tech::map_lookups(tex, wrap);
-  r.bias.kind = bias;
+  r.bias.mode = bias;
   if (spot) {
     r.kind = tech::LightKind::spot;
     r.perspective = true;
@@ -82,7 +82,7 @@ TEST(ClassicX8, EqualsScalarClassicVisibilityPerPoint) {
     const shading::Texture2D tex = shading::Texture2D::view(map);
     for (shading::Wrap wrap : {shading::Wrap::clamp_to_border, shading::Wrap::clamp_to_edge})
       for (bool spot : {false, true})
-        for (tech::BiasKind bias : {tech::BiasKind::none, tech::BiasKind::slope, tech::BiasKind::normal})
+        for (tech::BiasMode bias : {tech::BiasMode::none, tech::BiasMode::slope, tech::BiasMode::normal})
           for (tech::FilterKind kind : kinds)
             for (bool pcf_taps : {false, true})
               for (int taps : {4, 16}) {

@@ -8,9 +8,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "cli/frame/frame.h"
+#include "scenes/frame/frame.h"
 #include "scenes/builtin_scenes.h"
-#include "tests/cli/frame/golden.h"
+#include "tests/scenes/frame/golden.h"
 
 namespace {
 
@@ -47,55 +47,67 @@ class Golden : public testing::TestWithParam<Step> {};
 TEST_P(Golden, HashIsStableAcrossThreadCounts) {
   const Step& s = GetParam();
   const scenes::Scene scene = scenes::builtin_scene(s.scene);
-  frame::FrameOptions o;
+  frame::FrameConfig o;
   o.width = 320;
   o.height = 180;
-  o.filter = s.filter;
-  o.bias = s.bias;
+  o.filter = *shading::tech::parse_filter(s.filter);
+  o.bias = *shading::tech::parse_bias_mode(s.bias);
   o.cull_front = s.cull_front;
   o.poisson_taps = s.taps;
-  o.pcf_taps = s.pcf_taps;
-  o.shadow_size = 1024;
+  o.params["pcf_taps"] = bool(s.pcf_taps);
+  o.map_size = 1024;
   testsupport::expect_golden_frame(s.name, s.expected, scene, o,
-                                   [](const frame::Frame& f) { ASSERT_EQ(f.maps.size(), 1u); });
+                                   [](const frame::Frame& f) { ASSERT_EQ(frame::export_maps(f).size(), 1u); });
 }
 
 INSTANTIATE_TEST_SUITE_P(Tutorial, Golden, testing::ValuesIn(kSteps),
                          [](const testing::TestParamInfo<Step>& i) { return std::string(i.param.name); });
 
-// Options the frame renderer must refuse, naming the option.
-TEST(Frame, RejectsUnknownOptions) {
+// Settings the frame renderer must refuse, naming the field (unknown names cannot reach a typed FrameConfig:
+// the CLI refuses them, tests/cli/cli_test.cpp).
+TEST(Frame, RejectsBadSettings) {
   const scenes::Scene scene = scenes::builtin_scene("tutorial");
   raster::Renderer r(0);
-  frame::FrameOptions o;
+  frame::FrameConfig o;
   o.width = 32;
   o.height = 32;
-  o.filter = "blurry";
-  EXPECT_THROW(frame::render_frame(scene, o, r), std::invalid_argument);
-  o.filter.reset();
-  o.bias = "huge";
-  EXPECT_THROW(frame::render_frame(scene, o, r), std::invalid_argument);
-  o.bias.reset();
-  o.shadow_size = 3;
-  EXPECT_THROW(frame::render_frame(scene, o, r), std::invalid_argument);
+  auto message = [&] {
+    try {
+      frame::render_frame(scene, o, r);
+    } catch (const frame::FrameError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  o.map_size = 3;
+  EXPECT_EQ(message().rfind("map_size: ", 0), 0u);
+  o.map_size.reset();
+  o.params["fit"] = std::string("loose");
+  EXPECT_EQ(message().rfind("lights[0].shadow.params.fit: ", 0), 0u) << message();
+  o.params.clear();
+  o.params["seamless"] = false;  // a cube parameter, and the tutorial has no cube light
+  EXPECT_EQ(message().rfind("params.seamless: ", 0), 0u) << message();
+  o.params.clear();
+  EXPECT_EQ(message(), "no error");
 }
 
 // The EXR map carries what CONVENTIONS asks for.
 TEST(Frame, MapsCarryMatricesAndNames) {
   const scenes::Scene scene = scenes::builtin_scene("tutorial-spot");
   raster::Renderer r(0);
-  frame::FrameOptions o;
+  frame::FrameConfig o;
   o.width = 64;
   o.height = 36;
-  o.shadow_size = 256;
+  o.map_size = 256;
   const frame::Frame f = frame::render_frame(scene, o, r);
-  ASSERT_EQ(f.maps.size(), 1u);
-  EXPECT_EQ(f.maps[0].width, 256);
-  EXPECT_EQ(f.maps[0].technique, "shadowmap");
-  EXPECT_EQ(f.maps[0].depth_format, "d16");
-  EXPECT_EQ(f.maps[0].encoding, "window-depth");
-  EXPECT_NE(f.maps[0].world_to_ndc, glm::mat4(1.0f));
-  EXPECT_EQ(f.map_names[0].rfind("light0-", 0), 0u);
+  const std::vector<frame::NamedMap> maps = frame::export_maps(f);
+  ASSERT_EQ(maps.size(), 1u);
+  EXPECT_EQ(maps[0].map.width, 256);
+  EXPECT_EQ(maps[0].map.technique, "shadowmap");
+  EXPECT_EQ(maps[0].map.depth_format, "d16");
+  EXPECT_EQ(maps[0].map.encoding, "window-depth");
+  EXPECT_NE(maps[0].map.world_to_ndc, glm::mat4(1.0f));
+  EXPECT_EQ(maps[0].name.rfind("light0-", 0), 0u);
   EXPECT_EQ(f.stats.maps_rendered, 1u);
 }
 

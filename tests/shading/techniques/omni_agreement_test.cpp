@@ -113,7 +113,7 @@ TEST(OmniAgreement, ReceiverPlaneMatchesRayCastingUpToAFewTexels) {
     s.map_size = t.n;
     s.filter = tech::FilterKind::hard;
     s.depth_format = raster::DepthFormat::d24;
-    s.bias.kind = tech::BiasKind::slope;
+    s.bias.mode = tech::BiasMode::slope;
     BuiltOmni b = build_omni(r, t.kind, all, light, s);
     int differ = 0;
     float worst_texels = 0.0f, worst_m = 0.0f;
@@ -177,7 +177,7 @@ TEST(OmniAgreement, PyramidSceneHasNoSeamPixels) {
   light.hemispherical = true;
   tech::OmniSettings s;
   s.filter = tech::FilterKind::hard;
-  s.bias.kind = tech::BiasKind::slope;
+  s.bias.mode = tech::BiasMode::slope;
   s.map_size = 1024;
   raster::Renderer r(2);
   BuiltOmni pyr = build_omni(r, tech::OmniKind::pyramid, all, light, s);

@@ -9,9 +9,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "cli/frame/frame.h"
+#include "scenes/frame/frame.h"
 #include "scenes/builtin_scenes.h"
-#include "tests/cli/frame/golden.h"
+#include "tests/scenes/frame/golden.h"
 
 namespace {
 
@@ -41,16 +41,15 @@ class OmniGolden : public testing::TestWithParam<Case> {};
 TEST_P(OmniGolden, HashIsStableAcrossThreadCounts) {
   const Case& c = GetParam();
   const scenes::Scene scene = scenes::builtin_scene(c.scene);
-  frame::FrameOptions o;
+  frame::FrameConfig o;
   o.width = 320;
   o.height = 180;
-  o.technique = c.technique;
-  o.filter = c.filter;
-  o.shadow_size = 512;
-  if (c.pack) o.paraboloid_pack = c.pack;
+  o.technique = *shading::tech::parse_technique(c.technique);
+  o.filter = *shading::tech::parse_filter(c.filter);
+  o.map_size = 512;
+  if (c.pack) o.params["paraboloid_pack"] = std::string(c.pack);
   testsupport::expect_golden_frame(c.name, c.expected, scene, o, [](const frame::Frame& f) {
-    ASSERT_EQ(f.maps.size(), 1u);
-    EXPECT_TRUE(f.notes.empty());
+    ASSERT_EQ(frame::export_maps(f).size(), 1u);
   });
 }
 
@@ -61,20 +60,21 @@ INSTANTIATE_TEST_SUITE_P(Omni, OmniGolden, testing::ValuesIn(kCases),
 TEST(OmniFrame, MapsCarryEveryPass) {
   const scenes::Scene scene = scenes::builtin_scene("paraboloid");
   raster::Renderer r(0);
-  frame::FrameOptions o;
+  frame::FrameConfig o;
   o.width = 64;
   o.height = 36;
-  o.shadow_size = 64;
+  o.map_size = 64;
   struct Want {
     const char* technique;
     int w, h;
     size_t passes;
   };
   for (const Want& w : {Want{"cube", 192, 128, 6}, Want{"paraboloid", 128, 64, 2}, Want{"pyramid", 64, 64, 4}}) {
-    o.technique = w.technique;
+    o.technique = *shading::tech::parse_technique(w.technique);
     const frame::Frame f = frame::render_frame(scene, o, r);
-    ASSERT_EQ(f.maps.size(), 1u);
-    const scenes::io::ExrMap& m = f.maps[0];
+    const std::vector<frame::NamedMap> maps = frame::export_maps(f);
+    ASSERT_EQ(maps.size(), 1u);
+    const scenes::io::ExrMap& m = maps[0].map;
     EXPECT_EQ(m.technique, w.technique);
     EXPECT_EQ(m.encoding, "radial-distance");
     EXPECT_EQ(m.width, w.w);
@@ -92,11 +92,11 @@ TEST(OmniFrame, MapsCarryEveryPass) {
 TEST(OmniFrame, RejectsBadOptions) {
   const scenes::Scene scene = scenes::builtin_scene("paraboloid");
   raster::Renderer r(0);
-  frame::FrameOptions o;
+  frame::FrameConfig o;
   o.width = 64;
   o.height = 36;
-  o.shadow_size = 32;
-  auto message = [&](frame::FrameOptions opt) -> std::string {
+  o.map_size = 32;
+  auto message = [&](frame::FrameConfig opt) -> std::string {
     try {
       frame::render_frame(scene, opt, r);
     } catch (const std::invalid_argument& e) {
@@ -104,24 +104,24 @@ TEST(OmniFrame, RejectsBadOptions) {
     }
     return "";
   };
-  frame::FrameOptions a = o;
-  a.technique = "paraboloid";
-  a.paraboloid_pack = "rgb565";
-  EXPECT_NE(message(a).find("--paraboloid-pack"), std::string::npos);
-  a.paraboloid_pack.reset();
-  a.split_plane = "0,0,0";
-  EXPECT_NE(message(a).find("--split-plane"), std::string::npos);
-  a.split_plane = "w";
-  EXPECT_NE(message(a).find("--split-plane"), std::string::npos);
-  a.split_plane = "1,0.5,0";
+  frame::FrameConfig a = o;
+  a.technique = *shading::tech::parse_technique("paraboloid");
+  a.params["paraboloid_pack"] = std::string("rgb565");
+  EXPECT_NE(message(a).find("params.paraboloid_pack"), std::string::npos);
+  a.params.erase("paraboloid_pack");
+  a.params["split_plane"] = std::string("0,0,0");
+  EXPECT_NE(message(a).find("params.split_plane"), std::string::npos);
+  a.params["split_plane"] = std::string("w");
+  EXPECT_NE(message(a).find("params.split_plane"), std::string::npos);
+  a.params["split_plane"] = std::string("1,0.5,0");
   EXPECT_EQ(message(a), "");
-  frame::FrameOptions b = o;
-  b.technique = "pyramid";
-  b.shadow_size = 33;
-  EXPECT_NE(message(b).find("--shadow-size"), std::string::npos);
-  b.shadow_size = 32;
-  b.bias = "offset";
-  EXPECT_NE(message(b).find("--bias"), std::string::npos);
+  frame::FrameConfig b = o;
+  b.technique = *shading::tech::parse_technique("pyramid");
+  b.map_size = 33;
+  EXPECT_NE(message(b).find("map_size"), std::string::npos);
+  b.map_size = 32;
+  b.bias = *shading::tech::parse_bias_mode("offset");
+  EXPECT_NE(message(b).find("bias"), std::string::npos);
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ tech::OmniSettings settings(int size) {
   s.map_size = size;
   s.depth_format = raster::DepthFormat::d32f;
   s.filter = tech::FilterKind::hard;
-  s.bias.kind = tech::BiasKind::constant;
+  s.bias.mode = tech::BiasMode::constant;
   s.bias.constant = 0.002f;
   return s;
 }

@@ -251,10 +251,9 @@ TEST(ProjectiveCache, RebuildsOnlyWhatChanged) {
 }
 
 TEST(ProjectiveMap, DefaultsRow) {
-  const auto d = find_technique_defaults("projective");
-  ASSERT_TRUE(d.has_value());
-  EXPECT_EQ(d->encoding, "caster-mask");
-  EXPECT_EQ(d->settings.map_size, ProjectiveSettings{}.map_size);
+  const TechniqueInfo& d = info(Technique::projective);
+  EXPECT_EQ(d.encoding, "caster-mask");
+  EXPECT_EQ(int(d.map_size), ProjectiveSettings{}.map_size);
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ TEST(ProjectiveOutline, MatchesTheDepthMapWithinOneTexel) {
   // Classic: the plane's box as receivers, the box as the only caster.
   ClassicSettings cs;
   cs.filter = FilterKind::hard;
-  cs.bias.kind = BiasKind::none;
+  cs.bias.mode = BiasMode::none;
   cs.map_size = 4096;
   cs.depth_format = raster::DepthFormat::d32f;
   ClassicFit fit;

@@ -1,5 +1,5 @@
-# Tests of shading/techniques/ and cli/frame/: analytic shadow-map cases (shadow area, PCF ramp, acne against
-# slope bias), golden-image hashes of the tutorial steps at several thread counts, and the bias measurements.
+# Tests of shading/techniques/: analytic shadow-map cases (shadow area, PCF ramp, acne against
+# slope bias), golden-image hashes of whole frames (scenes/frame) of the tutorial steps at several thread counts, and the bias measurements.
 list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/classic_analytic_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/classic_x8_test.cpp

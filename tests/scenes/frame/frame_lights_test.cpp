@@ -1,12 +1,12 @@
-// Per-light shadow settings in the frame renderer (cli/frame/frame_lights.h): every light is read with its own
+// Per-light shadow settings in the frame renderer (scenes/frame/frame_lights.h): every light is read with its own
 // filter, and the command-line value overrides reach the technique layer or are refused naming the option.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "cli/frame/frame.h"
-#include "cli/frame/frame_lights.h"
+#include "scenes/frame/frame.h"
+#include "scenes/frame/frame_lights.h"
 #include "scenes/builtin_scenes.h"
 #include "tests/support.h"
 
@@ -33,14 +33,14 @@ scenes::Scene two_lights() {
 TEST(FrameLights, EachLightIsReadWithItsOwnFilter) {
   raster::Renderer renderer(testsupport::test_threads());
   scenes::Scene scene = two_lights();
-  frame::FrameOptions opt;
+  frame::FrameConfig opt;
   opt.width = 192, opt.height = 108;
-  opt.shadow_size = 256;
+  opt.map_size = 256;
   auto render = [&](scenes::ShadowFilter a, scenes::ShadowFilter b) {
     scene.lights[0].shadow.filter = a;
     scene.lights[1].shadow.filter = b;
     frame::Frame f = frame::render_frame(scene, opt, renderer);
-    EXPECT_EQ(f.maps.size(), 2u);
+    EXPECT_EQ(frame::export_maps(f).size(), 2u);
     return std::move(f.color);
   };
   using F = scenes::ShadowFilter;
@@ -54,44 +54,43 @@ TEST(FrameLights, EachLightIsReadWithItsOwnFilter) {
 
 TEST(FrameLights, OverridesReachTheTechniqueSettings) {
   const scenes::Light sun = scenes::builtin_scene("tutorial").lights.at(0);
-  frame::FrameOptions o;
+  frame::FrameConfig o;
   o.bias_constant = 0.02f, o.bias_slope = 0.003f, o.bias_slope_max = 0.05f;
   o.offset_factor = -2.0f, o.offset_units = 8.0f, o.normal_offset = 0.1f;
-  o.poisson_spread = 1.0f / 350.0f, o.stratify = "world", o.fit = "fixed";
-  const frame::ResolvedLight r = frame::resolve_light(sun, o);
-  EXPECT_EQ(r.settings.bias.constant, 0.02f);
-  EXPECT_EQ(r.settings.bias.slope, 0.003f);
-  EXPECT_EQ(r.settings.bias.slope_max, 0.05f);
-  EXPECT_EQ(r.settings.bias.offset_factor, -2.0f);
-  EXPECT_EQ(r.settings.bias.offset_units, 8.0f);
-  EXPECT_EQ(r.settings.bias.normal_offset, 0.1f);
-  EXPECT_EQ(r.settings.filter_params.spread, 1.0f / 350.0f);
-  EXPECT_TRUE(r.settings.filter_params.stratify_world);
-  EXPECT_TRUE(r.fixed_box);
+  o.poisson_spread = 1.0f / 350.0f, o.params["stratify"] = std::string("world", o.params["fit"] = std::string("fixed"));
+  const frame::ResolvedLight r = frame::resolve_light(sun, 0, o);
+  EXPECT_EQ(r.config.bias.constant, 0.02f);
+  EXPECT_EQ(r.config.bias.slope, 0.003f);
+  EXPECT_EQ(r.config.bias.slope_max, 0.05f);
+  EXPECT_EQ(r.config.bias.offset_factor, -2.0f);
+  EXPECT_EQ(r.config.bias.offset_units, 8.0f);
+  EXPECT_EQ(r.config.bias.normal_offset, 0.1f);
+  EXPECT_EQ(r.config.filter_params.spread, 1.0f / 350.0f);
+  EXPECT_TRUE(r.config.filter_params.stratify_world);
+  EXPECT_EQ(std::get<std::string>(r.config.params.at("fit")), "fixed");
   // Unset options keep the light's own values.
-  const frame::ResolvedLight d = frame::resolve_light(sun, frame::FrameOptions{});
-  EXPECT_EQ(d.settings.bias.constant, sun.shadow.bias.constant);
-  EXPECT_EQ(d.settings.filter_params.spread, sun.shadow.poisson_spread);
-  EXPECT_FALSE(d.settings.filter_params.stratify_world);
+  const frame::ResolvedLight d = frame::resolve_light(sun, 0, frame::FrameConfig{});
+  EXPECT_EQ(d.config.bias.constant, sun.shadow.bias.constant);
+  EXPECT_EQ(d.config.filter_params.spread, sun.shadow.poisson_spread);
+  EXPECT_FALSE(d.config.filter_params.stratify_world);
 }
 
-TEST(FrameLights, BadOverridesNameTheOption) {
+TEST(FrameLights, BadOverridesNameTheField) {
   const scenes::Light sun = scenes::builtin_scene("tutorial").lights.at(0);
   auto message = [&](auto set) {
-    frame::FrameOptions o;
+    frame::FrameConfig o;
     set(o);
     try {
-      frame::resolve_light(sun, o);
+      frame::resolve_light(sun, 0, o);
     } catch (const std::invalid_argument& e) {
       return std::string(e.what());
     }
     return std::string("no error");
   };
-  EXPECT_EQ(message([](frame::FrameOptions& o) { o.poisson_spread = 0.0f; }).rfind("--poisson-spread: ", 0), 0u);
-  EXPECT_EQ(message([](frame::FrameOptions& o) { o.bias_constant = -0.1f; }).rfind("--bias-constant: ", 0), 0u);
-  EXPECT_EQ(message([](frame::FrameOptions& o) { o.bias_slope = NAN; }).rfind("--bias-slope: ", 0), 0u);
-  EXPECT_EQ(message([](frame::FrameOptions& o) { o.offset_units = INFINITY; }).rfind("--offset-units: ", 0), 0u);
-  EXPECT_EQ(message([](frame::FrameOptions& o) { o.stratify = "diagonal"; }).rfind("--stratify: ", 0), 0u);
-  EXPECT_EQ(message([](frame::FrameOptions& o) { o.fit = "loose"; }).rfind("--fit: ", 0), 0u);
-  EXPECT_EQ(message([](frame::FrameOptions& o) { o.offset_factor = -3.0f; }), "no error");  // signed is fine
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.poisson_spread = 0.0f; }).rfind("poisson_spread: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.bias_constant = -0.1f; }).rfind("bias.constant: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.bias_slope = NAN; }).rfind("bias.slope: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.offset_units = INFINITY; }).rfind("bias.offset_units: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.params["stratify"] = std::string("diagonal"); }).rfind("lights[0].shadow.params.stratify: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.offset_factor = -3.0f; }), "no error");  // signed is fine
 }

@@ -1,7 +1,7 @@
 // The camera pass's shader: world position and normal as perspective-correct varyings, Blinn-Phong per light
 // (shading/lighting.h) with the ambient term untouched and diffuse + specular scaled by the light's shadow
-// visibility. Each light is read with its own technique and filter, chosen once per quad (light_visibility) or,
-// on the pipeline's wide path (fragment_pair), once per quad pair with the filters eight lanes wide.
+// visibility. Each light is read through its technique's LightShadow with its own filter, once per quad
+// (light_visibility) or, on the pipeline's wide path (fragment_pair), once per quad pair eight lanes wide.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -14,8 +14,7 @@
 #include "raster/shader.h"
 #include "raster/simd/vec.h"
 #include "shading/lighting.h"
-#include "shading/techniques/classic.h"
-#include "shading/techniques/omni_read.h"
+#include "shading/techniques/technique.h"
 
 namespace frame {
 
@@ -24,34 +23,24 @@ struct CameraVertex {
   glm::vec3 normal;
 };
 
-// How a light's shadow is read in the camera pass. Each kind has a reader snapshotted once per frame and a
-// batch visibility function (per quad) that makes its run-time choices (filter, lookup) once per batch.
-enum class ShadowRead : uint8_t { none, classic, omni };
-
-// One light as the camera pass reads it; the reader matching `read` is used.
+// One light as the camera pass reads it: its shadow (the technique's LightShadow, owned by the frame; null
+// where the light casts none) is asked once per quad or quad pair.
 struct LightRecord {
   shading::Light light;
-  ShadowRead read = ShadowRead::none;
-  shading::tech::ClassicReader classic;
-  shading::tech::OmniReader omni;  // cube, paraboloid or pyramid
+  const shading::tech::LightShadow* shadow = nullptr;
 };
 
 // Visibility of a batch of points (a quad's) from one light; 1 where the light casts no shadow.
 inline void light_visibility(const LightRecord& l, std::span<const shading::tech::ShadowQuery> q, std::span<float> vis) {
-  switch (l.read) {
-    case ShadowRead::classic: shading::tech::classic_visibility(l.classic, q, vis); return;
-    case ShadowRead::omni: shading::tech::omni_visibility(l.omni, q, vis); return;
-    case ShadowRead::none: break;
-  }
+  if (l.shadow) return l.shadow->visibility(q, vis);
   for (float& v : vis) v = 1.0f;
 }
 
-// The same for up to eight points (a quad pair's), bit-identical per point: the classic map is read with the
-// eight-lane filters (classic_visibility_x8); omnidirectional maps are still read point by point.
+// The same for up to eight points (a quad pair's), bit-identical per point (LightShadow::visibility_x8).
 inline void light_visibility_x8(const LightRecord& l, std::span<const shading::tech::ShadowQuery> q,
                                 std::span<float> vis) {
-  if (l.read == ShadowRead::classic) return shading::tech::classic_visibility_x8(l.classic, q, vis);
-  light_visibility(l, q, vis);
+  if (l.shadow) return l.shadow->visibility_x8(q, vis);
+  for (float& v : vis) v = 1.0f;
 }
 
 // Per-draw (per instance) uniforms besides the filter.

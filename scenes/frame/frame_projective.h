@@ -1,4 +1,5 @@
-// The frame side of per-caster projective shadows: for every light whose technique is `projective`, one map per
+// The frame side of per-caster projective shadows (the registry's receiver_passes technique): for every light
+// whose technique is `projective`, one map per
 // caster (a top-level scene object with shadow-casting instances) taken from the cache or rebuilt, each
 // receiver instance's list of overlapping casters (its box against every caster's frustum), and the maps as
 // EXR. The camera pass then draws receivers through draw_receiver (projective_shaders.h).
@@ -6,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,7 @@
 #include "scenes/scene.h"
 #include "shading/techniques/projective_cache.h"
 #include "shading/techniques/projective_lookup.h"
+#include "shading/techniques/technique.h"
 
 namespace frame {
 
@@ -28,15 +31,6 @@ struct ProjectiveStats {
 // State that lives across frames of one scene sequence: the projective maps and their keys.
 struct FrameCache {
   shading::tech::ProjectiveCache projective;
-};
-
-// Command-line overrides that concern the projective technique.
-struct ProjectiveOverrides {
-  std::optional<std::string> technique;  // --technique for every light
-  std::optional<std::string> mode;       // --projective-mode: multipass | single-pass
-  std::optional<int> shadow_size;        // --shadow-size: the map side per caster
-  std::optional<int> max_textures;       // --projective-textures: single-pass textures per draw
-  bool export_maps = true;               // fill ProjectiveFrame::maps (EXR) for --maps
 };
 
 // One caster's map as the camera pass applies it.
@@ -74,16 +68,22 @@ struct ProjectiveFrame {
 // The upper bound of single-pass textures per draw (the shader's fixed array of samplers).
 inline constexpr int kMaxProjectiveTextures = 8;
 
-// A light's projective settings: its map_size and `params` (projective_mode, caster_shade, lod_bias,
-// fade_start, fade_end, max_textures, decimate), then the overrides. Throws std::invalid_argument naming the
-// option or `lights[i].shadow.params.KEY` for a bad value.
-shading::tech::ProjectiveSettings resolve_projective(const scenes::ShadowSettings& s, const ProjectiveOverrides& o,
-                                                     size_t light_index);
+// A light's projective settings from its merged configuration (map_size, and the parameters projective_mode,
+// max_textures, caster_shade, lod_bias, fade_start, fade_end, decimate). Throws FrameError naming the parameter.
+shading::tech::ProjectiveSettings resolve_projective(const shading::tech::ShadowConfig& config);
+
+// The projective lights of a frame: their index in the scene and merged configuration.
+struct ProjectiveLight {
+  size_t index = 0;
+  shading::tech::ShadowConfig config;
+};
 
 // Builds or reuses every projective light's caster maps (cache.begin_frame() … end_frame() inside) and the
-// overlap lists. A scene with no projective light gives empty lists (every instance drawn once).
-ProjectiveFrame prepare_projective(const scenes::Scene& scene, const ProjectiveOverrides& o, const ProjectiveView& view,
-                                   raster::Renderer& renderer, shading::tech::ProjectiveCache& cache);
+// overlap lists; the maps become EXR records when `export_maps`. No projective light: empty lists (every
+// instance drawn once).
+ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const ProjectiveLight> lights,
+                                   bool export_maps, const ProjectiveView& view, raster::Renderer& renderer,
+                                   shading::tech::ProjectiveCache& cache);
 
 // The window rectangle (whole pixels, clamped to the viewport) holding every point of `box` that lies in the
 // frustum; the whole viewport when a corner is behind the camera; empty (width 0) when there is none.

@@ -1,6 +1,6 @@
 // Projective maps for a frame: settings, casters, the cache and the receivers' overlap lists (see
 // frame_projective.h).
-#include "cli/frame/frame_projective.h"
+#include "scenes/frame/frame_projective.h"
 
 #include <algorithm>
 #include <cctype>
@@ -13,7 +13,7 @@
 #include <glm/vector_relational.hpp>
 
 #include "scenes/scene_queries.h"
-#include "shading/techniques/technique_types.h"
+#include "scenes/frame/frame.h"
 
 namespace frame {
 
@@ -23,18 +23,6 @@ namespace {
 
 glm::vec3 transform_point(const glm::mat4& m, const glm::vec3& p) {
   return glm::vec3(m[0]) * p.x + glm::vec3(m[1]) * p.y + glm::vec3(m[2]) * p.z + glm::vec3(m[3]);
-}
-
-// A number param within [lo, hi], or `fallback` when absent.
-double number_param(const scenes::ShadowSettings& s, const std::string& key, double fallback, double lo, double hi,
-                    const std::string& where) {
-  const auto it = s.params.find(key);
-  if (it == s.params.end()) return fallback;
-  const double* v = std::get_if<double>(&it->second);
-  if (!v || !std::isfinite(*v) || *v < lo || *v > hi)
-    throw std::invalid_argument(where + key + ": expected a number in [" + std::to_string(lo).substr(0, 4) + ", " +
-                                std::to_string(hi).substr(0, 4) + "]");
-  return *v;
 }
 
 // The world box of an instance from its mesh's model-space box (eight corners transformed): conservative,
@@ -67,45 +55,22 @@ tech::ProjectiveLight projector_of(const scenes::Light& l) {
 
 }  // namespace
 
-tech::ProjectiveSettings resolve_projective(const scenes::ShadowSettings& s, const ProjectiveOverrides& o,
-                                            size_t light_index) {
-  const std::string where = "lights[" + std::to_string(light_index) + "].shadow.params.";
+tech::ProjectiveSettings resolve_projective(const tech::ShadowConfig& c) {
   tech::ProjectiveSettings p;
-  p.map_size = o.shadow_size ? *o.shadow_size : int(s.map_size);
-  if (p.map_size < 1 || p.map_size > 16384)
-    throw std::invalid_argument("--shadow-size: " + std::to_string(p.map_size) + " is outside 1..16384");
-  std::string mode = "multipass";
-  if (const auto it = s.params.find("projective_mode"); it != s.params.end()) {
-    const auto* str = std::get_if<std::string>(&it->second);
-    if (!str || !tech::parse_projective_mode(*str))
-      throw std::invalid_argument(where + "projective_mode: expected \"multipass\" or \"single-pass\"");
-    mode = *str;
-  }
-  if (o.mode) {
-    if (!tech::parse_projective_mode(*o.mode))
-      throw std::invalid_argument("--projective-mode: unknown mode '" + *o.mode + "' (known: multipass, single-pass)");
-    mode = *o.mode;
-  }
-  p.mode = *tech::parse_projective_mode(mode);
-  p.caster_shade = float(number_param(s, "caster_shade", 0.0, 0.0, 1.0, where));
-  p.lod_bias = float(number_param(s, "lod_bias", 0.0, 0.0, 8.0, where));
-  p.fade_start = float(number_param(s, "fade_start", 0.0, 0.0, 1e6, where));
-  p.fade_end = float(number_param(s, "fade_end", 0.0, 0.0, 1e6, where));
-  if (s.params.count("fade_end") && p.fade_end <= p.fade_start)
-    throw std::invalid_argument(where + "fade_end: must be greater than fade_start");
-  const double n = number_param(s, "max_textures", 4.0, 1.0, kMaxProjectiveTextures, where);
-  if (n != std::floor(n)) throw std::invalid_argument(where + "max_textures: expected a whole number");
-  p.max_textures = int(n);
-  if (o.max_textures) {
-    if (*o.max_textures < 1 || *o.max_textures > kMaxProjectiveTextures)
-      throw std::invalid_argument("--projective-textures: " + std::to_string(*o.max_textures) + " is outside 1.." +
-                                  std::to_string(kMaxProjectiveTextures));
-    p.max_textures = *o.max_textures;
-  }
-  if (const auto it = s.params.find("decimate"); it != s.params.end()) {
-    const bool* b = std::get_if<bool>(&it->second);
-    if (!b) throw std::invalid_argument(where + "decimate: expected true or false");
-    p.decimate = *b;
+  p.map_size = c.map_size;
+  try {
+    const tech::Params params(c);
+    p.mode = *tech::parse_projective_mode(params.text("projective_mode"));
+    p.caster_shade = float(params.number("caster_shade"));
+    p.lod_bias = float(params.number("lod_bias"));
+    p.fade_start = float(params.number("fade_start"));
+    p.fade_end = float(params.number("fade_end"));
+    if (params.given("fade_end") && p.fade_end <= p.fade_start)
+      throw tech::TechniqueError(params.where("fade_end") + ": must be greater than fade_start");
+    p.max_textures = int(params.number("max_textures"));
+    p.decimate = params.flag("decimate");
+  } catch (const tech::TechniqueError& e) {
+    throw FrameError(e.what());
   }
   return p;
 }
@@ -154,8 +119,9 @@ raster::Rect shadow_scissor(const tech::CasterFrustum& f, const tech::Box& box, 
   return raster::Rect{x0, y0, x1 - x0, y1 - y0};
 }
 
-ProjectiveFrame prepare_projective(const scenes::Scene& scene, const ProjectiveOverrides& o, const ProjectiveView& view,
-                                   raster::Renderer& renderer, tech::ProjectiveCache& cache) {
+ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const ProjectiveLight> lights,
+                                   bool export_maps, const ProjectiveView& view, raster::Renderer& renderer,
+                                   tech::ProjectiveCache& cache) {
   ProjectiveFrame pf;
   pf.overlaps.resize(scene.instances.size());
   pf.stats.receiver_draws.assign(scene.instances.size(), 0);
@@ -182,11 +148,10 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, const ProjectiveO
   }
 
   bool first = true;
-  for (size_t li = 0; li < scene.lights.size(); ++li) {
+  for (const ProjectiveLight& pl : lights) {
+    const size_t li = pl.index;
     const scenes::Light& light = scene.lights[li];
-    const std::string technique = o.technique ? *o.technique : std::string(scenes::to_string(light.shadow.technique));
-    if (technique != "projective") continue;
-    const tech::ProjectiveSettings s = resolve_projective(light.shadow, o, li);
+    const tech::ProjectiveSettings s = resolve_projective(pl.config);
     pf.stats.active = true;
     if (first) pf.mode = s.mode, pf.max_textures = s.max_textures, first = false;
     const tech::ProjectiveLight projector = projector_of(light);
@@ -220,14 +185,13 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, const ProjectiveO
         }
         return tech::build_caster_map(renderer, projector, s, bounds, parts);
       });
-      if (o.export_maps) {
+      if (export_maps) {
         scenes::io::ExrMap e = scenes::io::exr_map_from(*map->target, 0);
         e.world_to_camera = map->frustum.view;
         e.world_to_ndc = map->frustum.proj * map->frustum.view;
         e.technique = "projective";
         e.depth_format = "d32f";  // the mask as floats; there is no depth buffer
-        e.encoding = "caster-mask";
-        if (const auto d = tech::find_technique_defaults("projective")) e.encoding = std::string(d->encoding);
+        e.encoding = tech::info(tech::Technique::projective).encoding;
         pf.maps.push_back(std::move(e));
         const std::string object_name = obj < scene.objects.size() ? scene.objects[obj] : "object";
         pf.map_names.push_back(file_stem("light" + std::to_string(li) + "-" + light.name + "-caster" +

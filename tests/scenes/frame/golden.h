@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "cli/frame/frame.h"
+#include "scenes/frame/frame.h"
 #include "raster/target.h"
 
 namespace testsupport {
@@ -46,7 +46,7 @@ inline void expect_golden_hash(const std::string& name, uint64_t actual, uint64_
 // is `expected`; the threads-0 frame is dumped on request.
 template <class Check>
 void expect_golden_frame(const std::string& name, uint64_t expected, const scenes::Scene& scene,
-                         const frame::FrameOptions& options, Check check) {
+                         const frame::FrameConfig& options, Check check) {
   uint64_t first = 0;
   for (int threads : {0, 1, 2}) {
     raster::Renderer r(threads);

@@ -1,14 +1,14 @@
 // The camera shader's wide path (CameraShader::fragment_pair, each light's visibility asked for a quad pair with
 // the filters eight lanes wide) gives the same bits as its quad path (fragment(), forced with
-// FrameOptions::quad_fragments): whole frames of the classic scenes with every filter and map format.
+// FrameConfig::quad_fragments): whole frames of the classic scenes with every filter and map format.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <string>
 
-#include "cli/frame/camera_shader.h"
+#include "scenes/frame/camera_shader.h"
 #include "raster/quad_path_only.h"
-#include "cli/frame/frame.h"
+#include "scenes/frame/frame.h"
 #include "scenes/builtin_scenes.h"
 #include "tests/support.h"
 
@@ -53,15 +53,15 @@ void expect_paths_agree(const char* scene_name, raster::DepthFormat format, int 
   for (auto& l : scene.lights) l.shadow.depth_format = format;
   raster::Renderer renderer(testsupport::test_threads());
   for (const Read& r : kReads) {
-    frame::FrameOptions o;
+    frame::FrameConfig o;
     o.width = 256, o.height = 144;  // odd quad pairs at the right edge are covered by triangle edges anyway
-    o.filter = r.filter;
-    o.bias = "slope";
+    o.filter = *shading::tech::parse_filter(r.filter);
+    o.bias = *shading::tech::parse_bias_mode("slope");
     o.cull_front = true;
     o.poisson_taps = r.taps;
-    o.pcf_taps = r.pcf_taps;
-    o.stratify = r.stratify;
-    o.shadow_size = map_size;
+    o.params["pcf_taps"] = bool(r.pcf_taps);
+    o.params["stratify"] = std::string(r.stratify);
+    o.map_size = map_size;
     const frame::Frame wide = frame::render_frame(scene, o, renderer);
     o.quad_fragments = true;
     const frame::Frame quads = frame::render_frame(scene, o, renderer);

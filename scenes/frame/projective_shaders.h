@@ -13,7 +13,7 @@
 #include <array>
 #include <span>
 
-#include "cli/frame/frame_projective.h"
+#include "scenes/frame/frame_projective.h"
 #include "raster/renderer.h"
 #include "shading/techniques/projective_lookup.h"
 

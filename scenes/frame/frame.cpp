@@ -1,0 +1,183 @@
+// render_frame: every light resolved and planned through the technique registry, its maps built; the projective
+// lights' per-caster maps; then the camera pass, one draw per instance (plus the projective receiver passes),
+// each light read through its LightShadow. export_maps turns the built maps into EXR records (see frame.h).
+#include "scenes/frame/frame.h"
+
+#include <chrono>
+#include <optional>
+
+#include <glm/matrix.hpp>
+
+#include "raster/quad_path_only.h"
+#include "scenes/camera_math.h"
+#include "scenes/frame/camera_shader.h"
+#include "scenes/frame/frame_lights.h"
+#include "scenes/frame/projective_shaders.h"
+#include "scenes/scene_queries.h"
+
+namespace frame {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+tech::Box to_box(const scenes::Aabb& a) { return tech::Box{a.min, a.max}; }
+
+std::vector<CameraVertex> camera_vertices(const scenes::Mesh& m) {
+  std::vector<CameraVertex> v(m.positions.size());
+  for (size_t i = 0; i < v.size(); ++i)
+    v[i] = CameraVertex{m.positions[i], i < m.normals.size() ? m.normals[i] : glm::vec3(0.0f, 1.0f, 0.0f)};
+  return v;
+}
+
+// The frame's technique parameters must each reach some light: one no light's technique takes would do nothing.
+void check_params_used(const FrameConfig& config, const std::vector<ResolvedLight>& lights) {
+  for (const auto& [key, value] : config.params) {
+    bool used = false;
+    for (const ResolvedLight& r : lights) used |= tech::find_param(r.config.technique, key) != nullptr;
+    if (used) {
+      for (const ResolvedLight& r : lights)
+        if (tech::find_param(r.config.technique, key))
+          if (auto why = tech::param_problem(r.config.technique, key, value)) throw FrameError("params." + key + ": " + *why);
+      continue;
+    }
+    std::string takers;
+    for (const tech::TechniqueInfo& t : tech::kTechniques)
+      if (t.built && tech::find_param(t.id, key)) takers += (takers.empty() ? "" : ", ") + std::string(t.name);
+    throw FrameError("params." + key + ": no light of this frame uses a technique that takes it" +
+                     (takers.empty() ? std::string(" (no technique does)") : " (taken by: " + takers + ")"));
+  }
+}
+
+}  // namespace
+
+Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster::Renderer& renderer,
+                   FrameCache* cache) {
+  if (config.width < 1 || config.height < 1 || config.width > 16384 || config.height > 16384)
+    throw FrameError("size: " + std::to_string(config.width) + "x" + std::to_string(config.height) +
+                     " is outside 1..16384");
+  if (!scene.cameras.empty() && config.camera >= scene.cameras.size())
+    throw FrameError("camera: index " + std::to_string(config.camera) + " is out of range (the scene has " +
+                     std::to_string(scene.cameras.size()) + ")");
+  const float aspect = float(config.width) / float(config.height);
+  const scenes::Camera camera =
+      scene.cameras.empty() ? scenes::frame_camera(scenes::scene_bounds(scene)) : scene.cameras[config.camera];
+  const glm::mat4 view_proj = scenes::projection_matrix(camera, aspect) * scenes::view_matrix(camera);
+
+  // ---- Every light resolved before anything is drawn: a bad setting fails the frame before any work.
+  std::vector<ResolvedLight> resolved;
+  for (size_t i = 0; i < scene.lights.size(); ++i) resolved.push_back(resolve_light(scene.lights[i], i, config));
+  check_params_used(config, resolved);
+
+  Frame frame{raster::ColorTarget(config.width, config.height, raster::ColorFormat::rgba8), {}, {}, {}};
+
+  // ---- Shadow maps, light by light, through the registry.
+  const auto t_shadow = Clock::now();
+  std::optional<scenes::TriangleSoup> casters;  // flattened once, when a light first needs them
+  std::optional<tech::PlanInputs> inputs;       // scene bounds, computed once
+  std::vector<ProjectiveLight> projective_lights;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    ResolvedLight& r = resolved[i];
+    LightResult lr;
+    lr.name = "light" + std::to_string(i) + "-" + scene.lights[i].name;
+    lr.technique = r.config.technique;
+    const tech::TechniqueImpl* impl = tech::find_impl(r.config.technique);
+    if (!impl) throw FrameError("lights[" + std::to_string(i) + "].shadow.technique: " +
+                                tech::refusal(r.config.technique, scene.lights[i].type));
+    if (impl->application == tech::Application::receiver_passes) {
+      projective_lights.push_back({i, r.config});
+    } else if (impl->application == tech::Application::light_visibility) {
+      if (!inputs) {
+        inputs.emplace();
+        inputs->casters = to_box(scenes::scene_bounds(scene, scenes::InstanceFilter::casters));
+        inputs->receivers = tech::camera_receiver_box(
+            view_proj, to_box(scenes::scene_bounds(scene, scenes::InstanceFilter::receivers)));
+        inputs->camera_view_proj = view_proj;
+        inputs->eye = camera.position;
+      }
+      if (!casters) casters = scenes::flatten(scene, scenes::InstanceFilter::casters);
+      try {
+        lr.shadow = impl->plan(r.desc, r.config, *inputs);
+      } catch (const tech::TechniqueError& e) {
+        const std::string what = e.what();
+        // Messages that name a light field get the light's place in front; parameter messages already have it.
+        throw FrameError(what.rfind("lights[", 0) == 0 ? what : "lights[" + std::to_string(i) + "]." + what);
+      }
+      frame.stats.draws += lr.shadow->build(renderer, tech::CasterGeometry{casters->positions, casters->indices});
+      ++frame.stats.maps_rendered;
+    }
+    frame.lights.push_back(std::move(lr));
+  }
+  // Per-caster projective maps (frame_projective.h), from the cache where nothing changed.
+  FrameCache local_cache;
+  frame.projective = prepare_projective(scene, projective_lights, config.export_maps,
+                                        ProjectiveView{view_proj, config.width, config.height}, renderer,
+                                        (cache ? *cache : local_cache).projective);
+  frame.stats.maps_rendered += frame.projective.stats.maps_rebuilt;
+  frame.stats.shadow_ms = ms_since(t_shadow);
+
+  // ---- Camera pass.
+  const auto t_camera = Clock::now();
+  std::vector<LightRecord> records;
+  for (size_t i = 0; i < frame.lights.size(); ++i) records.push_back({resolved[i].light, frame.lights[i].shadow.get()});
+
+  raster::DepthTarget depth(config.width, config.height, raster::DepthFormat::d24);
+  depth.clear(1.0f);
+  frame.color.clear(config.clear_color);
+  std::vector<std::vector<CameraVertex>> mesh_vertices(scene.meshes.size());
+  {
+    CameraShader shader;
+    shader.lights = records;
+    shader.u.view_proj = view_proj;
+    shader.u.eye = camera.position;
+    for (size_t index = 0; index < scene.instances.size(); ++index) {
+      const scenes::Instance& inst = scene.instances[index];
+      const scenes::Mesh& mesh = scene.meshes.at(inst.mesh);
+      const scenes::Material& mat = scene.materials.at(inst.material);
+      if (mesh_vertices[inst.mesh].empty()) mesh_vertices[inst.mesh] = camera_vertices(mesh);
+      shader.u.model = inst.transform;
+      shader.u.normal_matrix = glm::transpose(glm::inverse(glm::mat3(inst.transform)));
+      shader.u.material = shading::Material{glm::vec3(mat.base_color), 0.1f, mat.specular_strength, mat.shininess};
+      shader.u.specular_color = mat.specular_color;
+      shader.u.receives_shadows = inst.receives_shadows;
+      raster::DrawState s;
+      s.cull = mat.double_sided ? raster::CullMode::none : raster::CullMode::back;
+      // Drawn once, plus the projective maps overlapping it (projective_shaders.h).
+      auto draw = [&](const auto& sh) {
+        return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, sh,
+                             std::span<const CameraVertex>(mesh_vertices[inst.mesh]),
+                             std::span<const uint32_t>(mesh.indices), frame.projective, index);
+      };
+      frame.stats.draws += config.quad_fragments ? draw(raster::QuadPathOnly<CameraShader>{shader}) : draw(shader);
+    }
+  }
+  frame.stats.camera_ms = ms_since(t_camera);
+  frame.stats.projective = frame.projective.stats;
+  return frame;
+}
+
+std::vector<NamedMap> export_maps(const Frame& frame) {
+  std::vector<NamedMap> out;
+  for (const LightResult& l : frame.lights) {
+    if (!l.shadow) continue;
+    const std::vector<tech::MapRecord> records = l.shadow->maps();
+    for (size_t k = 0; k < records.size(); ++k) {
+      const tech::MapRecord& r = records[k];
+      scenes::io::ExrMap e = scenes::io::exr_map_from(*r.target);
+      if (!r.values.empty()) e.z = r.values;
+      e.technique = r.technique;
+      e.encoding = r.encoding;
+      e.world_to_camera = r.world_to_camera;
+      e.world_to_ndc = r.world_to_ndc;
+      for (const tech::MapPassRecord& p : r.passes)
+        e.passes.push_back(scenes::io::MapPass{p.label, p.viewport, p.world_to_camera, p.world_to_ndc});
+      out.push_back({records.size() == 1 ? l.name : l.name + "-" + std::to_string(k), std::move(e)});
+    }
+  }
+  for (size_t m = 0; m < frame.projective.maps.size(); ++m)
+    out.push_back({frame.projective.map_names[m], frame.projective.maps[m]});
+  return out;
+}
+
+}  // namespace frame

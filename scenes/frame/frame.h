@@ -1,0 +1,90 @@
+// A whole frame as a library call: every light's shadow through the technique registry
+// (shading/techniques/technique.h), then the camera pass with Blinn-Phong shading that reads them. The
+// configuration is typed (the vocabulary's enums and numbers); map export to EXR is a separate step
+// (export_maps). `shadowlab render`, the golden-image tests and the frame benchmarks all call render_frame.
+#pragma once
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "raster/renderer.h"
+#include "raster/target.h"
+#include "scenes/frame/frame_projective.h"
+#include "scenes/io/exr_map.h"
+#include "scenes/scene.h"
+#include "shading/techniques/technique.h"
+
+namespace frame {
+
+namespace tech = shading::tech;
+
+// A configuration a frame cannot be rendered with; what() starts with the field (`map_size: ...`,
+// `lights[1].shadow.params.split_plane: ...`).
+struct FrameError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// What to render. The shadow fields override every light's own settings where set.
+struct FrameConfig {
+  int width = 1280, height = 720;
+  size_t camera = 0;                              // index into Scene::cameras
+  glm::vec4 clear_color{0.0f, 0.0f, 0.4f, 1.0f};  // the tutorial's glClearColor (alpha 1)
+
+  std::optional<tech::Technique> technique;
+  std::optional<tech::FilterKind> filter;
+  std::optional<tech::BiasMode> bias;
+  std::optional<int> map_size;                 // texels per side: 16..16384 (1..16384 for projective)
+  std::optional<tech::DepthFormat> depth_format;
+  std::optional<bool> cull_front;              // back faces only into the maps
+  std::optional<int> poisson_taps;             // 4 or 16
+  std::optional<float> poisson_spread;         // > 0
+  // Bias values (the mode is `bias`): finite and >= 0; offset factor and units: finite.
+  std::optional<float> bias_constant, bias_slope, bias_slope_max, offset_factor, offset_units, normal_offset;
+  // Technique parameters (vocabulary.h's ParamSpec keys), for every light whose technique takes them; a key no
+  // light's technique takes is an error.
+  std::map<std::string, tech::ParamValue> params;
+
+  bool export_maps = true;      // keep what export_maps needs (projective: the per-caster maps)
+  bool quad_fragments = false;  // camera pass on the quad path only (fragment()), for tests of the wide path
+};
+
+struct FrameStats {
+  double shadow_ms = 0, camera_ms = 0;  // wall time of the map passes and of the camera pass
+  size_t maps_rendered = 0;
+  raster::DrawStats draws;
+  ProjectiveStats projective;           // per-caster projective maps: cache use, draws per instance
+};
+
+// One light's shadow in a frame: its technique's LightShadow (null for none and projective).
+struct LightResult {
+  std::string name;  // file stem of its maps, "light0-sun"
+  tech::Technique technique = tech::Technique::none;
+  std::unique_ptr<tech::LightShadow> shadow;
+};
+
+struct Frame {
+  raster::ColorTarget color;        // linear RGBA8 (PNG writing encodes to sRGB)
+  std::vector<LightResult> lights;  // per scene light
+  ProjectiveFrame projective;       // the per-caster projective maps
+  FrameStats stats;
+};
+
+// Throws FrameError naming the field for a bad configuration or light setting. `cache` (optional) keeps
+// per-caster projective maps across frames: only those whose light or caster changed are rebuilt.
+Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster::Renderer& renderer,
+                   FrameCache* cache = nullptr);
+
+// A shadow map ready for write_exr_map, with its file stem ("light0-sun", "light2-lamp-caster1-box").
+struct NamedMap {
+  std::string name;
+  scenes::io::ExrMap map;
+};
+// Every map of every light, in light order (the projective casters last).
+std::vector<NamedMap> export_maps(const Frame& frame);
+
+}  // namespace frame

@@ -1,0 +1,101 @@
+// Light and shadow-setting resolution for the frame renderer (see frame_lights.h).
+#include "scenes/frame/frame_lights.h"
+
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace frame {
+
+namespace {
+
+shading::Light lighting_light(const scenes::Light& l) {
+  shading::Light s;
+  switch (l.type) {
+    case tech::LightType::directional: s.type = shading::LightType::directional; break;
+    case tech::LightType::spot: s.type = shading::LightType::spot; break;
+    case tech::LightType::point:
+    case tech::LightType::hemispherical: s.type = shading::LightType::point; break;
+  }
+  s.position = l.position;
+  s.direction = glm::normalize(l.direction);
+  s.color = l.color;
+  s.power = l.intensity;
+  s.range = l.range;
+  s.inner_angle = glm::radians(l.inner_cone_deg);
+  s.outer_angle = glm::radians(l.outer_cone_deg);
+  return s;
+}
+
+// An override if given, else the light's value; finite and >= 0 (> 0 with `positive`) unless `signed_ok`.
+float checked_value(std::optional<float> given, float light_value, const char* field, bool positive = false,
+                    bool signed_ok = false) {
+  const float v = given.value_or(light_value);
+  if (!std::isfinite(v) || (!signed_ok && (positive ? !(v > 0.0f) : v < 0.0f)))
+    throw FrameError(std::string(field) + ": " + std::to_string(v) + " must be a finite number" +
+                     (signed_ok ? "" : positive ? " above 0" : " of 0 or more"));
+  return v;
+}
+
+}  // namespace
+
+ResolvedLight resolve_light(const scenes::Light& light, size_t index, const FrameConfig& o) {
+  ResolvedLight r;
+  r.light = lighting_light(light);
+  const std::string at = "lights[" + std::to_string(index) + "]";
+  const scenes::ShadowSettings& s = light.shadow;
+  tech::ShadowConfig& c = r.config;
+  c.technique = o.technique.value_or(s.technique);
+  if (const std::string why = tech::refusal(c.technique, light.type); !why.empty())
+    throw FrameError((o.technique ? std::string("technique") : at + ".shadow.technique") + ": " + why);
+  const tech::TechniqueInfo& info = tech::info(c.technique);
+
+  c.filter = o.filter.value_or(s.filter);
+  c.bias = s.bias;
+  if (o.bias) c.bias.mode = *o.bias;
+  c.cull_front = o.cull_front.value_or(s.cull_front);
+  c.map_size = o.map_size.value_or(int(s.map_size));
+  const int min_size = info.reads_filter ? 16 : 1;
+  if (c.map_size < min_size || c.map_size > 16384)
+    throw FrameError(std::string(o.map_size ? "map_size" : at + ".shadow.map_size") + ": " +
+                     std::to_string(c.map_size) + " is outside " + std::to_string(min_size) + "..16384");
+  c.depth_format = o.depth_format.value_or(s.depth_format);
+  c.filter_params.taps = o.poisson_taps.value_or(int(s.poisson_taps));
+  if (c.filter_params.taps != 4 && c.filter_params.taps != 16)
+    throw FrameError("poisson_taps: " + std::to_string(c.filter_params.taps) + " is not 4 or 16");
+  c.filter_params.spread = checked_value(o.poisson_spread, s.poisson_spread, "poisson_spread", true);
+  c.bias.constant = checked_value(o.bias_constant, c.bias.constant, "bias.constant");
+  c.bias.slope = checked_value(o.bias_slope, c.bias.slope, "bias.slope");
+  c.bias.slope_max = checked_value(o.bias_slope_max, c.bias.slope_max, "bias.slope_max");
+  c.bias.offset_factor = checked_value(o.offset_factor, c.bias.offset_factor, "bias.offset_factor", false, true);
+  c.bias.offset_units = checked_value(o.offset_units, c.bias.offset_units, "bias.offset_units", false, true);
+  c.bias.normal_offset = checked_value(o.normal_offset, c.bias.normal_offset, "bias.normal_offset");
+
+  // The technique's parameters: the light's own (those its technique takes: a --technique override may have
+  // changed it), then the frame's.
+  c.where = at + ".shadow.params.";
+  for (const auto& [key, value] : s.params)
+    if (tech::find_param(c.technique, key)) c.params[key] = value;
+  for (const auto& [key, value] : o.params)
+    if (tech::find_param(c.technique, key)) c.params[key] = value;
+  if (info.reads_filter) {
+    try {
+      const tech::Params p(c);
+      c.filter_params.pcf_taps = p.flag("pcf_taps");
+      c.filter_params.stratify_world = p.text("stratify") == "world";
+    } catch (const tech::TechniqueError& e) {
+      throw FrameError(e.what());
+    }
+  }
+
+  r.desc.type = light.type;
+  r.desc.position = light.position;
+  r.desc.direction = r.light.direction;
+  r.desc.range = light.range;
+  r.desc.outer_angle = r.light.outer_angle;
+  return r;
+}
+
+}  // namespace frame

@@ -1,0 +1,126 @@
+// The interface every shadow technique implements, and the registry that finds the implementation of a
+// vocabulary.h technique. A technique plans one light's maps (which targets, passes, matrices and viewports,
+// from the light, its settings and the scene's bounds), builds them (its map passes), reads them in the camera
+// pass (scalar and eight-wide visibility, bit-identical to each other) and describes them for export (one
+// MapRecord per file, with every pass's matrices). The frame renderer (scenes/frame) only talks to this
+// interface; adding a technique is its own files plus one row in registry.cpp (docs/architecture.md).
+#pragma once
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "raster/renderer.h"
+#include "shading/techniques/light_frustum.h"
+#include "shading/techniques/shadow_filters.h"
+#include "shading/techniques/vocabulary.h"
+
+namespace shading::tech {
+
+// A bad setting found while planning; what() names the setting (e.g. `lights[1].shadow.params.split_plane`).
+struct TechniqueError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// The light as every technique sees it.
+struct LightDesc {
+  LightType type = LightType::directional;
+  glm::vec3 position{0.0f};
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way light travels (spot, hemispherical: the axis), unit length
+  float range = 50.0f;                     // spot, point, hemispherical: metres
+  float outer_angle = 0.4f;                // spot: cone half-angle, radians
+};
+
+// A light's shadow settings once the scene's values and the frame's overrides are merged.
+struct ShadowConfig {
+  Technique technique = Technique::shadowmap;
+  FilterKind filter = FilterKind::pcf;
+  FilterParams filter_params;
+  BiasParams bias;
+  bool cull_front = false;
+  int map_size = 1024;
+  DepthFormat depth_format = DepthFormat::d16;
+  std::map<std::string, ParamValue> params;  // the technique's own parameters (checked with param_problem)
+  std::string where = "shadow.params.";      // prefix naming a parameter in messages
+};
+
+// Reads a technique's parameters from a ShadowConfig: the given value, or the ParamSpec's default.
+class Params {
+ public:
+  explicit Params(const ShadowConfig& c) : c_(c) {}
+  bool flag(std::string_view key) const;
+  double number(std::string_view key) const;
+  std::string text(std::string_view key) const;  // choice and text parameters
+  bool given(std::string_view key) const { return c_.params.count(std::string(key)) != 0; }
+  std::string where(std::string_view key) const { return c_.where + std::string(key); }
+
+ private:
+  const ParamSpec& spec(std::string_view key) const;
+  const ShadowConfig& c_;
+};
+
+// What a plan may look at besides the light: the scene's bounds and the camera.
+struct PlanInputs {
+  Box casters;                     // bounds of every shadow caster
+  Box receivers;                   // the camera frustum's part of the receivers' bounds (camera_receiver_box)
+  glm::mat4 camera_view_proj{1.0f};
+  glm::vec3 eye{0.0f};
+};
+
+// World-space caster triangles, drawn into every pass.
+struct CasterGeometry {
+  std::span<const glm::vec3> positions;
+  std::span<const uint32_t> indices;
+};
+
+// One pass of an exported map: its viewport in the image and its matrices.
+struct MapPassRecord {
+  std::string label;
+  raster::Rect viewport;
+  glm::mat4 world_to_camera{1.0f}, world_to_ndc{1.0f};
+};
+
+// One exported map (an EXR file): the target it reads, or `values` (row-major, lower-left origin) where what
+// the lookups compare with is not the target's depth; the matrices of the whole map and of each pass.
+struct MapRecord {
+  const raster::DepthTarget* target = nullptr;
+  std::vector<float> values;
+  std::string technique, encoding;
+  glm::mat4 world_to_camera{1.0f}, world_to_ndc{1.0f};
+  std::vector<MapPassRecord> passes;  // empty for a single full-image pass
+};
+
+// One light's shadow for one frame: planned by the registry's factory, then built, read and exported.
+class LightShadow {
+ public:
+  virtual ~LightShadow() = default;
+  virtual raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& casters) = 0;
+  // Visibility in [0, 1] of a batch of points (a quad's): the technique's run-time choices made once per batch.
+  virtual void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const = 0;
+  // The same for up to eight points (a quad pair's), bit-identical per point.
+  virtual void visibility_x8(std::span<const ShadowQuery> q, std::span<float> vis) const { visibility(q, vis); }
+  virtual std::vector<MapRecord> maps() const = 0;
+};
+
+// How the camera pass applies a technique: through LightShadow::visibility in the lighting sum, or as extra
+// receiver passes over the shaded frame (the projective technique of 2000, scenes/frame/frame_projective.h).
+enum class Application : uint8_t { none, light_visibility, receiver_passes };
+
+struct TechniqueImpl {
+  Technique id;
+  Application application;
+  // light_visibility only: plans a light's maps. Throws TechniqueError naming a bad setting.
+  std::unique_ptr<LightShadow> (*plan)(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
+};
+
+// Every built technique, one row each (registry.cpp); techniques the vocabulary marks unbuilt have none.
+std::span<const TechniqueImpl> registry();
+const TechniqueImpl* find_impl(Technique t);
+
+}  // namespace shading::tech

@@ -1,0 +1,317 @@
+// The one vocabulary of shadow settings, shared by the technique layer, the scene model, the frame library and
+// the command line: light types, techniques, filters, bias modes and depth formats with their names and
+// one-line descriptions, the table of per-technique defaults (which light types each serves, map size and depth
+// format) and each technique's own parameters. Header-only and constexpr, with no dependency beyond
+// raster/formats.h, so every layer can read it; the implementations of the techniques are found through
+// registry.h.
+#pragma once
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "raster/formats.h"
+
+namespace shading::tech {
+
+using raster::DepthFormat;
+
+enum class LightType : uint8_t { directional, spot, point, hemispherical };
+
+// How a light's shadow is computed. `none`: the light casts no shadows.
+enum class Technique : uint8_t {
+  none,
+  shadowmap,      // classic single map: orthographic (directional) or perspective (spot)
+  cube,           // six 90° faces around a point light
+  paraboloid,     // dual paraboloid (one paraboloid for a hemispherical light)
+  pyramid,        // 180° light: one square map split into four triangles
+  projective,     // per-caster black-on-white projective textures (2000)
+  cascades,       // not built yet: cascaded maps for a directional light
+  lispsm,         // not built yet: light-space perspective shadow maps
+  frustum_faces,  // not built yet: perspective maps cut from the light-facing faces of the view frustum
+};
+
+// How a map is read. Each is a compile-time filter type (shadow_filters.h); the choice is made once per batch.
+enum class FilterKind : uint8_t { hard, pcf, poisson, stratified, rotated, early_bail };
+
+// Which depth bias is applied.
+enum class BiasMode : uint8_t { none, constant, slope, offset, normal };
+
+// All bias values; `mode` picks the one used. Depth values are the map's [0, 1] scale.
+struct BiasParams {
+  BiasMode mode = BiasMode::slope;
+  float constant = 0.005f;      // constant: ref -= constant
+  float slope = 0.005f;         // slope: ref -= clamp(slope · tan(acos(N·L)), 0, slope_max)
+  float slope_max = 0.01f;
+  float offset_factor = 1.1f;   // offset: glPolygonOffset(factor, units) in the depth pass, no shader bias
+  float offset_units = 4.0f;
+  float normal_offset = 0.02f;  // normal: receiver moved this far (metres) along its normal, no depth bias
+  bool operator==(const BiasParams&) const = default;
+};
+
+// Reading parameters shared by the Poisson family.
+struct FilterParams {
+  int taps = 4;                      // 4 or 16
+  float spread = 1.0f / 700.0f;      // disc radius in shadow-map texture coordinates
+  bool pcf_taps = false;             // each Poisson tap is a hardware 2×2 PCF lookup instead of one compare
+  bool stratify_world = false;       // stratified: hash world position rounded to 1 mm instead of the pixel
+  bool operator==(const FilterParams&) const = default;
+};
+
+// A name with a one-line description, for `shadowlab list`, the docs and error messages.
+struct NamedEntry {
+  std::string_view name;
+  std::string_view description;
+};
+
+// ---- Technique parameters: the per-technique extras a scene gives in `shadow.params` and the command line
+// sets with the option named here. Each technique lists its own; every technique that reads a map also takes
+// the filter parameters (kFilterParams).
+enum class ParamKind : uint8_t { flag, number, integer, choice, text };
+
+// A parameter's value as a scene file or an option gives it.
+using ParamValue = std::variant<bool, double, std::string>;
+
+struct ParamSpec {
+  std::string_view key;       // the key in a scene's shadow.params
+  std::string_view option;    // the command-line option (flags also get --no-...)
+  ParamKind kind = ParamKind::flag;
+  std::string_view fallback;  // the default, as text
+  std::string_view help;
+  double lo = 0.0, hi = 0.0;  // number, integer: the accepted range
+  std::array<std::string_view, 3> choices{};  // choice: the accepted values
+};
+
+inline constexpr ParamSpec kFilterParams[] = {
+    {"pcf_taps", "--pcf-taps", ParamKind::flag, "false", "Poisson filters: each tap is a hardware 2x2 PCF lookup"},
+    {"stratify", "--stratify", ParamKind::choice, "pixel",
+     "stratified filter seed: the pixel, or the world position rounded to 1 mm", 0, 0, {"pixel", "world"}},
+};
+inline constexpr ParamSpec kClassicParams[] = {
+    {"fit", "--fit", ParamKind::choice, "auto",
+     "directional light box: fitted to receivers and casters, or the tutorial's fixed box", 0, 0, {"auto", "fixed"}},
+};
+inline constexpr ParamSpec kCubeParams[] = {
+    {"seamless", "--seamless", ParamKind::flag, "true", "cube: filter across face edges (GL_TEXTURE_CUBE_MAP_SEAMLESS)"},
+};
+inline constexpr ParamSpec kParaboloidParams[] = {
+    {"paraboloid_pack", "--paraboloid-pack", ParamKind::choice, "float",
+     "paraboloid depth storage: float, or base-256 packed into an RGBA8 target", 0, 0, {"float", "rgba8"}},
+    {"split_plane", "--split-plane", ParamKind::text, "light",
+     "paraboloid split plane normal: light (its direction), x, y, z, -x, -y, -z or a,b,c"},
+};
+inline constexpr ParamSpec kProjectiveParams[] = {
+    {"projective_mode", "--projective-mode", ParamKind::choice, "multipass",
+     "projective: a multiply pass per caster, or up to max_textures maps in one pass", 0, 0,
+     {"multipass", "single-pass"}},
+    {"max_textures", "--projective-textures", ParamKind::integer, "4",
+     "projective single-pass: shadow textures per draw (more casters: extra passes)", 1, 8},
+    {"caster_shade", "--caster-shade", ParamKind::number, "0", "projective: the shade a caster's mask is drawn with",
+     0, 1},
+    {"lod_bias", "--lod-bias", ParamKind::number, "0", "projective: mip level bias of the mask lookups", 0, 8},
+    {"fade_start", "--fade-start", ParamKind::number, "0", "projective: distance where the shadow starts to fade",
+     0, 1e6},
+    {"fade_end", "--fade-end", ParamKind::number, "0", "projective: distance where the shadow has faded (0: never)",
+     0, 1e6},
+    {"decimate", "--decimate", ParamKind::flag, "false", "projective: decimate casters before drawing their masks"},
+};
+
+// ---- The defaults table: one row per technique, indexed by Technique.
+inline constexpr uint8_t light_bit(LightType t) { return uint8_t(1u << unsigned(t)); }
+inline constexpr uint8_t kAllLights = 0xF;
+
+struct TechniqueInfo {
+  Technique id;
+  std::string_view name;
+  std::string_view description;
+  uint8_t lights;              // light_bit() of every light type it serves
+  bool built;                  // implemented (registry.h); a scene or option naming an unbuilt one is refused
+  uint32_t map_size;           // texels per side: of the map, per face or per caster
+  DepthFormat depth_format;
+  std::string_view encoding;   // what the map stores (EXR `shadowlab:encoding`)
+  std::span<const ParamSpec> params;  // besides kFilterParams, which every technique reading a map takes
+  bool reads_filter;           // takes the filter, bias and kFilterParams
+};
+
+inline constexpr TechniqueInfo kTechniques[] = {
+    {Technique::none, "none", "the light casts no shadows", kAllLights, true, 0, DepthFormat::d16,
+     "", {}, false},
+    {Technique::shadowmap, "shadowmap",
+     "classic shadow map: orthographic for directional, perspective for spot lights",
+     light_bit(LightType::directional) | light_bit(LightType::spot), true, 1024, DepthFormat::d16,
+     "window-depth", kClassicParams, true},
+    {Technique::cube, "cube", "cube shadow map: six 90° faces around a point light",
+     light_bit(LightType::point) | light_bit(LightType::hemispherical), true, 1024, DepthFormat::d16, "radial-distance", kCubeParams, true},
+    {Technique::paraboloid, "paraboloid", "dual-paraboloid shadow map (one paraboloid for a hemispherical light)",
+     light_bit(LightType::point) | light_bit(LightType::hemispherical), true, 1024, DepthFormat::d16, "radial-distance", kParaboloidParams, true},
+    {Technique::pyramid, "pyramid", "pyramid shadow map: a 180° light in one square map split into four triangles",
+     light_bit(LightType::hemispherical), true, 1024, DepthFormat::d16, "radial-distance", {},
+     true},
+    {Technique::projective, "projective",
+     "per-caster projective shadow textures (black on white) cast onto receivers",
+     light_bit(LightType::directional) | light_bit(LightType::spot) | light_bit(LightType::point), true, 128,
+     DepthFormat::d16, "caster-mask", kProjectiveParams, false},
+    {Technique::cascades, "cascades", "cascaded shadow maps along the view frustum",
+     light_bit(LightType::directional), false, 1024, DepthFormat::d16, "window-depth", {}, true},
+    {Technique::lispsm, "lispsm", "light-space perspective shadow maps",
+     light_bit(LightType::directional), false, 1024, DepthFormat::d16, "window-depth", {}, true},
+    {Technique::frustum_faces, "frustum-faces",
+     "perspective maps from the light-facing faces of the view frustum",
+     light_bit(LightType::directional), false, 1024, DepthFormat::d16, "window-depth", {}, true},
+};
+
+inline constexpr NamedEntry kLightTypeNames[] = {
+    {"directional", "parallel rays from a direction (the sun)"},
+    {"spot", "a cone from a position: direction, inner and outer half-angles, range"},
+    {"point", "all directions from a position, up to a range"},
+    {"hemispherical", "a point light shining into the half-space it faces (180°)"},
+};
+inline constexpr NamedEntry kFilterNames[] = {
+    {"hard", "one nearest-texel comparison"},
+    {"pcf", "hardware PCF: four comparisons blended bilinearly"},
+    {"poisson", "PCF at poisson_taps points of a Poisson disc"},
+    {"stratified", "Poisson taps chosen per pixel from the 16-point disc"},
+    {"rotated", "the Poisson disc rotated per pixel"},
+    {"early-bail", "four distant taps first, all 16 only on shadow edges"},
+};
+inline constexpr NamedEntry kBiasNames[] = {
+    {"none", "no bias"},
+    {"constant", "constant depth bias (0.005)"},
+    {"slope", "0.005 * tan(acos(N.L)) clamped to [0, 0.01]"},
+    {"offset", "polygon offset (factor, units) while building the map"},
+    {"normal", "normal offset: the receiver moves along its normal before the lookup"},
+};
+inline constexpr NamedEntry kDepthFormatNames[] = {
+    {"d16", "16-bit unorm depth"},
+    {"d24", "24-bit unorm depth"},
+    {"d32f", "32-bit float depth"},
+};
+
+static_assert(std::size(kTechniques) == size_t(Technique::frustum_faces) + 1);
+static_assert(std::size(kFilterNames) == size_t(FilterKind::early_bail) + 1);
+static_assert(std::size(kBiasNames) == size_t(BiasMode::normal) + 1);
+static_assert(std::size(kLightTypeNames) == size_t(LightType::hemispherical) + 1);
+static_assert(std::size(kDepthFormatNames) == size_t(DepthFormat::d32f) + 1);
+consteval bool techniques_in_enum_order() {
+  for (size_t i = 0; i < std::size(kTechniques); ++i)
+    if (size_t(kTechniques[i].id) != i) return false;
+  return true;
+}
+static_assert(techniques_in_enum_order(), "kTechniques rows must follow the Technique enum");
+
+constexpr const TechniqueInfo& info(Technique t) { return kTechniques[size_t(t)]; }
+constexpr bool supports(Technique t, LightType l) { return (info(t).lights & light_bit(l)) != 0; }
+
+namespace detail {
+template <class Enum, size_t N>
+constexpr std::optional<Enum> parse_in(const NamedEntry (&table)[N], std::string_view s) {
+  for (size_t i = 0; i < N; ++i)
+    if (table[i].name == s) return Enum(i);
+  return std::nullopt;
+}
+}  // namespace detail
+
+constexpr std::string_view to_string(Technique t) { return info(t).name; }
+constexpr std::string_view to_string(LightType t) { return kLightTypeNames[size_t(t)].name; }
+constexpr std::string_view to_string(FilterKind f) { return kFilterNames[size_t(f)].name; }
+constexpr std::string_view to_string(BiasMode b) { return kBiasNames[size_t(b)].name; }
+using raster::to_string;
+
+constexpr std::optional<Technique> parse_technique(std::string_view s) {
+  for (const TechniqueInfo& t : kTechniques)
+    if (t.name == s) return t.id;
+  return std::nullopt;
+}
+constexpr std::optional<LightType> parse_light_type(std::string_view s) {
+  return detail::parse_in<LightType>(kLightTypeNames, s);
+}
+constexpr std::optional<FilterKind> parse_filter(std::string_view s) {
+  return detail::parse_in<FilterKind>(kFilterNames, s);
+}
+constexpr std::optional<BiasMode> parse_bias_mode(std::string_view s) {
+  return detail::parse_in<BiasMode>(kBiasNames, s);
+}
+constexpr std::optional<DepthFormat> parse_depth_format(std::string_view s) {
+  return detail::parse_in<DepthFormat>(kDepthFormatNames, s);
+}
+
+// "directional, spot": the light types a technique serves, for `list` and error messages.
+inline std::string light_names(uint8_t mask) {
+  std::string out;
+  for (size_t i = 0; i < std::size(kLightTypeNames); ++i)
+    if (mask & (1u << i)) out += (out.empty() ? "" : ", ") + std::string(kLightTypeNames[i].name);
+  return out;
+}
+
+// The parameter `key` of technique t (its own, or a filter parameter where it reads a map); null if none.
+constexpr const ParamSpec* find_param(Technique t, std::string_view key) {
+  for (const ParamSpec& p : info(t).params)
+    if (p.key == key) return &p;
+  if (info(t).reads_filter)
+    for (const ParamSpec& p : kFilterParams)
+      if (p.key == key) return &p;
+  return nullptr;
+}
+
+// Why technique t cannot shadow a light of type l (empty when it can): not built yet, or not for that type.
+inline std::string refusal(Technique t, LightType l) {
+  if (!info(t).built)
+    return "technique " + std::string(info(t).name) + " is not built yet";
+  if (!supports(t, l))
+    return "technique " + std::string(info(t).name) + " does not serve " + std::string(to_string(l)) +
+           " lights (it serves: " + light_names(info(t).lights) + ")";
+  return {};
+}
+
+// What is wrong with `value` as parameter `key` of technique t: a key it does not take, the wrong kind, out of
+// range or not among the choices; none when it is fine. Text values are checked by the technique itself.
+inline std::optional<std::string> param_problem(Technique technique, const std::string& key, const ParamValue& value) {
+  const ParamSpec* spec = find_param(technique, key);
+  if (!spec) {
+    std::string known;
+    auto add = [&](std::span<const ParamSpec> list) {
+      for (const auto& p : list) known += (known.empty() ? "" : ", ") + std::string(p.key);
+    };
+    add(info(technique).params);
+    if (info(technique).reads_filter) add(kFilterParams);
+    return "technique " + std::string(to_string(technique)) + " takes no parameter '" + key + "' (it takes: " +
+           (known.empty() ? std::string("none") : known) + ")";
+  }
+  switch (spec->kind) {
+    case ParamKind::flag:
+      if (!std::holds_alternative<bool>(value)) return std::string("expected true or false");
+      return std::nullopt;
+    case ParamKind::number:
+    case ParamKind::integer: {
+      const double* v = std::get_if<double>(&value);
+      char range[64];
+      std::snprintf(range, sizeof range, "[%g, %g]", spec->lo, spec->hi);
+      if (!v || !std::isfinite(*v) || *v < spec->lo || *v > spec->hi)
+        return std::string(spec->kind == ParamKind::integer ? "expected a whole number in " : "expected a number in ") +
+               range;
+      if (spec->kind == ParamKind::integer && *v != std::floor(*v)) return std::string("expected a whole number in ") + range;
+      return std::nullopt;
+    }
+    case ParamKind::choice: {
+      const std::string* v = std::get_if<std::string>(&value);
+      std::string known;
+      for (std::string_view c : spec->choices)
+        if (!c.empty()) {
+          if (v && *v == c) return std::nullopt;
+          known += (known.empty() ? "" : ", ") + std::string(c);
+        }
+      return "expected one of: " + known;
+    }
+    case ParamKind::text:
+      if (!std::holds_alternative<std::string>(value)) return std::string("expected a string");
+      return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+}  // namespace shading::tech
