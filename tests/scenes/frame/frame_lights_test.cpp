@@ -57,7 +57,9 @@ TEST(FrameLights, OverridesReachTheTechniqueSettings) {
   frame::FrameConfig o;
   o.bias_constant = 0.02f, o.bias_slope = 0.003f, o.bias_slope_max = 0.05f;
   o.offset_factor = -2.0f, o.offset_units = 8.0f, o.normal_offset = 0.1f;
-  o.poisson_spread = 1.0f / 350.0f, o.params["stratify"] = std::string("world", o.params["fit"] = std::string("fixed"));
+  o.poisson_spread = 1.0f / 350.0f;
+  o.params["stratify"] = std::string("world");
+  o.params["fit"] = std::string("fixed");
   const frame::ResolvedLight r = frame::resolve_light(sun, 0, o);
   EXPECT_EQ(r.config.bias.constant, 0.02f);
   EXPECT_EQ(r.config.bias.slope, 0.003f);

@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "scenes/frame/camera_shader.h"
+#include "shading/techniques/technique.h"
 #include "scenes/frame/frame_lights.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/camera_math.h"
@@ -80,24 +81,28 @@ bool occluded(const scenes::TriangleSoup& soup, glm::vec3 o, glm::vec3 dir) {
   return false;
 }
 
-struct Built {
-  std::unique_ptr<tech::ShadowMapSet> set;
-  tech::ClassicReader reader;
-};
+// The tutorial light's classic map built through the registry, as render_frame builds it.
+using Built = std::unique_ptr<tech::LightShadow>;
 
 Built build(raster::Renderer& r, const scenes::Scene& scene, const glm::mat4& vp, const frame::FrameConfig& o) {
-  const frame::ResolvedLight rl = frame::resolve_light(scene.lights[0], o);
-  tech::ClassicFit fit;
-  fit.casters = tech::Box{scenes::scene_bounds(scene, scenes::InstanceFilter::casters).min,
-                          scenes::scene_bounds(scene, scenes::InstanceFilter::casters).max};
+  const frame::ResolvedLight rl = frame::resolve_light(scene.lights[0], 0, o);
+  tech::PlanInputs in;
+  in.casters = tech::Box{scenes::scene_bounds(scene, scenes::InstanceFilter::casters).min,
+                         scenes::scene_bounds(scene, scenes::InstanceFilter::casters).max};
   const scenes::Aabb rb = scenes::scene_bounds(scene, scenes::InstanceFilter::receivers);
-  fit.receivers = tech::camera_receiver_box(vp, tech::Box{rb.min, rb.max});
+  in.receivers = tech::camera_receiver_box(vp, tech::Box{rb.min, rb.max});
   const scenes::TriangleSoup soup = scenes::flatten(scene, scenes::InstanceFilter::casters);
-  Built b;
-  b.set = std::make_unique<tech::ShadowMapSet>(tech::plan_classic_map(rl.classic, rl.settings, fit));
-  tech::build_maps(r, *b.set, soup.positions, soup.indices, tech::classic_depth_options(rl.settings));
-  b.reader = tech::make_classic_reader(*b.set, rl.classic, rl.settings);
+  Built b = tech::find_impl(rl.config.technique)->plan(rl.desc, rl.config, in);
+  b->build(r, tech::CasterGeometry{soup.positions, soup.indices});
   return b;
+}
+
+// One point's visibility (the frame reads quads; one point is a batch of one).
+float visibility(const Built& b, glm::vec3 p, glm::vec3 n, glm::vec2 frag) {
+  const tech::ShadowQuery q{p, n, frag};
+  float v = 1.0f;
+  b->visibility(std::span(&q, 1), std::span(&v, 1));
+  return v;
 }
 
 TEST(BiasMeasure, TutorialAcneAndPeterPanning) {
@@ -160,22 +165,22 @@ TEST(BiasMeasure, TutorialAcneAndPeterPanning) {
           if (!robustly_lit(x, y)) continue;
           ++lit;
           const glm::vec3 p(pos.read(x, y)), n(nrm.read(x, y));
-          if (tech::classic_visibility<tech::HardFilter, false>(b.reader, p, n, {x + 0.5f, y + 0.5f}) < 0.5f) ++acne;
+          if (visibility(b, p, n, {x + 0.5f, y + 0.5f}) < 0.5f) ++acne;
         }
       float gap = -1.0f;
       for (int mm = 1; mm <= 1000; ++mm) {
         const glm::vec3 p = contact + glm::vec3(h.x, 0.0f, h.y) * (float(mm) * 0.001f);
-        if (tech::classic_visibility<tech::HardFilter, false>(b.reader, p, {0, 1, 0}, {0, 0}) < 0.5f) {
+        if (visibility(b, p, {0, 1, 0}, {0, 0}) < 0.5f) {
           gap = float(mm - 1);
           break;
         }
       }
       if (std::getenv("SHADOWLAB_BIAS_DEBUG")) {
-        const glm::mat4 pr = b.set->passes[0].proj;
-        std::printf("  depth range %.3f m; vis at 1,10,50,100,200 mm:", 2.0f / pr[2][2]);
+        const glm::mat4 ndc = b->maps().at(0).world_to_ndc * glm::inverse(b->maps().at(0).world_to_camera);
+        std::printf("  depth range %.3f m; vis at 1,10,50,100,200 mm:", 2.0f / ndc[2][2]);
         for (int mm : {1, 10, 50, 100, 200})
-          std::printf(" %.2f", tech::classic_visibility<tech::HardFilter, false>(
-                                   b.reader, contact + glm::vec3(h.x, 0.0f, h.y) * (float(mm) * 0.001f), {0, 1, 0}, {0, 0}));
+          std::printf(" %.2f", visibility(
+                                   b, contact + glm::vec3(h.x, 0.0f, h.y) * (float(mm) * 0.001f), {0, 1, 0}, {0, 0}));
         std::printf("\n");
       }
       std::printf("%-8s%-6s %10d %12d %14.0f\n", kBiases[bi], cull_front ? "+back" : "", acne, lit, gap);

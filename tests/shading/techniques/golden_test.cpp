@@ -83,7 +83,7 @@ TEST(Frame, RejectsBadSettings) {
   EXPECT_EQ(message().rfind("map_size: ", 0), 0u);
   o.map_size.reset();
   o.params["fit"] = std::string("loose");
-  EXPECT_EQ(message().rfind("lights[0].shadow.params.fit: ", 0), 0u) << message();
+  EXPECT_EQ(message().rfind("params.fit: ", 0), 0u) << message();
   o.params.clear();
   o.params["seamless"] = false;  // a cube parameter, and the tutorial has no cube light
   EXPECT_EQ(message().rfind("params.seamless: ", 0), 0u) << message();
