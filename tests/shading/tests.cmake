@@ -18,7 +18,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   scenes/io_texture_test.cpp
 )
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::shading shadowlab::io OpenEXR::OpenEXR OpenImageIO::OpenImageIO)
-# Sampling conformance against llvmpipe needs the GL reference (tests/gl).
+# Sampling conformance against llvmpipe needs the GL reference (raster/reference/).
 if(TARGET shadowlab::glref)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/shading/sampling_conformance_test.cpp)
   list(APPEND SHADOWLAB_TEST_LIBS shadowlab::glref)
