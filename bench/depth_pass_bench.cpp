@@ -19,8 +19,8 @@
 
 #include "bench/bench_common.h"
 #include "bench/triangle_soup.h"
+#include "raster/reference/gl_reference.h"
 #include "raster/renderer.h"
-#include "tests/gl/gl_reference.h"
 
 namespace {
 

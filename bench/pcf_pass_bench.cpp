@@ -1,7 +1,7 @@
 // Shading benchmark of issue 3: a 1920×1080 full-screen pass doing one hardware-PCF lookup per pixel into a
 // 2048² d32f map, and one doing 16 Poisson taps (each a PCF lookup), in ms per frame, shadowlab beside llvmpipe
-// running the same GLSL (tests/gl: pixel (x, y) reads p = ((x+0.5)/W, (y+0.5)/H) with ref = (p.s + p.t)/2, the
-// taps at p + disk[i] · 2 texels, averaged; output grey). A third pass with no lookup (grey = ref) shows what
+// running the same GLSL (raster/reference: pixel (x, y) reads p = ((x+0.5)/W, (y+0.5)/H) with
+// ref = (p.s + p.t)/2, the taps at p + disk[i] · 2 texels, averaged; output grey). A third pass with no lookup (grey = ref) shows what
 // the pipeline itself costs each renderer: rasterizing, shading 2×2 quads and writing RGBA8.
 //   shadowlab_bench_pcf [--threads N] [--smoke] [--no-llvmpipe] [benchmark flags]
 #include <benchmark/benchmark.h>
@@ -14,16 +14,16 @@
 #include <vector>
 
 #include "bench/bench_common.h"
+#include "raster/reference/gl_reference.h"
 #include "raster/renderer.h"
 #include "shading/shadow_lookup.h"
 #include "shading/texture.h"
-#include "tests/gl/gl_reference.h"
 
 namespace {
 
 constexpr int kMap = 2048;
 
-// The pass's fragment shader, the GLSL of tests/gl written as a C++ shader over one PCF kernel type.
+// The pass's fragment shader, the GLSL of raster/reference written as a C++ shader over one PCF kernel type.
 template <class Kernel, int kTaps>
 struct PcfPassShader {
   using Vertex = glm::vec4;

@@ -1,6 +1,6 @@
 // Every numeric bound of the rasterizer in one place, with the derivation that makes the integer arithmetic
-// exact. Setup (setup.cpp) and tile execution (tile_raster.h) rely on these; the static_asserts below fail the
-// build if a constant is changed in a way the arithmetic no longer fits.
+// exact. Setup (setup.cpp, setup_batch.h) and tile execution (coverage.h, fragment_stage.h, hiz.h) rely on
+// these; the static_asserts below fail the build if a constant is changed in a way the arithmetic no longer fits.
 #pragma once
 #include <cstdint>
 #include <limits>

@@ -1,6 +1,6 @@
 // The contract between the pipeline and a programmable shader. A shader is a plain C++ type; the pipeline
-// (pipeline.h) is a template over it, so there is no virtual call per vertex or fragment, and a shader without
-// a fragment stage compiles to the lean depth-only path.
+// (Renderer::draw in renderer.h) is a template over it, so there is no virtual call per vertex or fragment, and
+// a shader without a fragment stage compiles to the lean depth-only path (depth_stage.h).
 //
 //   struct MyShader {
 //     using Vertex = MyVertex;                  // what the vertex buffer holds

@@ -1,5 +1,5 @@
-// Conformance against a real GL: the same clip-space triangles rendered by Mesa llvmpipe (tests/gl) and by
-// shadowlab must cover exactly the same pixels, with the same depth: setup.cpp and clip.h reproduce llvmpipe's
+// Conformance against a real GL: the same clip-space triangles rendered by Mesa llvmpipe (raster/reference/) and
+// by shadowlab must cover exactly the same pixels, with the same depth: setup.cpp and clip.h reproduce llvmpipe's
 // float arithmetic (depth plane, polygon offset, clipping), see tolerance() for what is measured.
 #include <gtest/gtest.h>
 
@@ -12,8 +12,8 @@
 #include "raster/renderer.h"
 #include "scenes/gltf_import.h"
 #include "scenes/scene_queries.h"
-#include "tests/gl/gl_test_support.h"
 #include "tests/raster/raster_test_util.h"
+#include "tests/raster/reference/gl_test_support.h"
 
 using namespace raster;
 

@@ -10,7 +10,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/quad_pair_test.cpp
 )
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::raster)
-# Conformance against Mesa llvmpipe needs the GL reference (tests/gl).
+# Conformance against Mesa llvmpipe needs the GL reference (raster/reference/).
 if(TARGET shadowlab::glref)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/raster/conformance_test.cpp)
   list(APPEND SHADOWLAB_TEST_LIBS shadowlab::glref shadowlab::scenes)

@@ -1,4 +1,5 @@
-# Tests of scenes/ (scene model, JSON format, glTF import, built-in scenes), included by tests/CMakeLists.txt.
+# Tests of scenes/ (scene model, JSON format, glTF import, built-in scenes) and of scenes/io/ (EXR maps, PNG
+# frames, material textures, checked with OpenEXR and OpenImageIO directly), included by tests/CMakeLists.txt.
 list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/builtin_scenes_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/gltf_assets_test.cpp
@@ -9,7 +10,8 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/scene_json_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/scene_queries_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/shadow_settings_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/scenes/io_exr_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/scenes/io_png_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/scenes/io_texture_test.cpp
 )
-list(APPEND SHADOWLAB_TEST_LIBS shadowlab::scenes)
-# The image-file tests of scenes/io/ (io_*_test.cpp) list themselves in io_tests.cmake when it exists.
-include(${CMAKE_CURRENT_LIST_DIR}/io_tests.cmake OPTIONAL)
+list(APPEND SHADOWLAB_TEST_LIBS shadowlab::scenes shadowlab::io OpenEXR::OpenEXR OpenImageIO::OpenImageIO)

@@ -12,7 +12,7 @@
 #include "raster/target.h"
 #include "shading/shadow_lookup.h"
 #include "shading/texture.h"
-#include "tests/gl/gl_test_support.h"
+#include "tests/raster/reference/gl_test_support.h"
 
 namespace {
 

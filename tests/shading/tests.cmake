@@ -1,5 +1,4 @@
-# Tests of shading/ (textures, samplers, lookups, cube maps, lighting) and of scenes/io/ (EXR maps, PNG frames,
-# material textures; listed here because tests/scenes/tests.cmake belongs to the scene tests).
+# Tests of shading/ (textures, samplers, lookups, cube maps, lighting), included by tests/CMakeLists.txt.
 list(APPEND SHADOWLAB_TEST_SOURCES
   shading/compare_test.cpp
   shading/cube_test.cpp
@@ -13,12 +12,9 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   shading/texel_format_test.cpp
   shading/texture_test.cpp
   shading/wrap_test.cpp
-  scenes/io_exr_test.cpp
-  scenes/io_png_test.cpp
-  scenes/io_texture_test.cpp
 )
-list(APPEND SHADOWLAB_TEST_LIBS shadowlab::shading shadowlab::io OpenEXR::OpenEXR OpenImageIO::OpenImageIO)
-# Sampling conformance against llvmpipe needs the GL reference (tests/gl).
+list(APPEND SHADOWLAB_TEST_LIBS shadowlab::shading)
+# Sampling conformance against llvmpipe needs the GL reference (raster/reference/).
 if(TARGET shadowlab::glref)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/shading/sampling_conformance_test.cpp)
   list(APPEND SHADOWLAB_TEST_LIBS shadowlab::glref)

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "tests/gl/gl_reference.h"
-#include "tests/gl/gl_util.h"
+#include "raster/reference/gl_reference.h"
+#include "raster/reference/gl_util.h"
 
 namespace glref {
 

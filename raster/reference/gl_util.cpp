@@ -1,6 +1,6 @@
 // GL helpers of the reference: error checks, shader programs, exact depth upload/readback and frame timing.
 // Depth codes travel as integers in both directions, never through a float, so no code can be lost.
-#include "tests/gl/gl_util.h"
+#include "raster/reference/gl_util.h"
 
 #include <chrono>
 #include <stdexcept>

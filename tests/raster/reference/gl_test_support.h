@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/gl/gl_reference.h"
+#include "raster/reference/gl_reference.h"
 #include "tests/support.h"
 
 // Declares `std::unique_ptr<glref::Context> name` with `threads` rasterizer threads, or skips the test.

@@ -1,6 +1,7 @@
-// The real-GL reference: Mesa llvmpipe driven through EGL on the surfaceless platform (no window, desktop GL 4.5
-// core), used by conformance tests to get what GL renders and samples from the same inputs, and by benchmarks
-// to time llvmpipe on the same work. Only tests/ and bench/ link it; nothing in the library depends on GL.
+// The real-GL reference (raster/reference/, target shadowlab::glref): Mesa llvmpipe driven through EGL on the
+// surfaceless platform (no window, desktop GL 4.5 core), used by conformance tests to get what GL renders and
+// samples from the same inputs, and by benchmarks to time llvmpipe on the same work. It takes raster's formats
+// and draw state; only tests/ and bench/ link it, and nothing in raster, shading or scenes depends on GL.
 #pragma once
 #include <cstdint>
 #include <memory>

@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/gl/gl_test_support.h"
+#include "tests/raster/reference/gl_test_support.h"
 
 namespace {
 

@@ -1,9 +1,0 @@
-# Tests of the llvmpipe reference itself (tests/gl/), included by tests/CMakeLists.txt. Adds nothing when the
-# reference is not built (SHADOWLAB_GL_REFERENCE=OFF).
-if(TARGET shadowlab::glref)
-  list(APPEND SHADOWLAB_TEST_SOURCES
-    ${CMAKE_CURRENT_SOURCE_DIR}/gl/gl_reference_test.cpp
-    ${CMAKE_CURRENT_SOURCE_DIR}/gl/gl_sampling_test.cpp
-    ${CMAKE_CURRENT_SOURCE_DIR}/gl/gl_timing_test.cpp)
-  list(APPEND SHADOWLAB_TEST_LIBS shadowlab::glref)
-endif()
