@@ -2,6 +2,7 @@
 // clamp, conversion to the format, depth test and masked write. No varyings, no colour, no quads.
 #pragma once
 #include <cstdint>
+#include <type_traits>
 
 #include "raster/depth_test.h"
 #include "raster/hiz.h"
@@ -31,22 +32,32 @@ inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, si
   return plane_depth_clamped(zcol, dzdy, z_offset, simd::VecF32::splat(float(y)));
 }
 
-template <DepthFormat Format, DepthFunc Func, bool Write>
+// Whether a depth-only stage's test is one hierarchical depth can skip blocks for: LESS or LEQUAL fixed at
+// compile time (a run-time DepthCompare never is).
+template <class Compare>
+inline constexpr bool kHiZCompare = false;
+template <>
+inline constexpr bool kHiZCompare<FixedDepthFunc<DepthFunc::less>> = true;
+template <>
+inline constexpr bool kHiZCompare<FixedDepthFunc<DepthFunc::lequal>> = true;
+
+// Compare: FixedDepthFunc<LESS or LEQUAL> or DepthCompare (see dispatch_depth_only_func, depth_test.h).
+template <DepthFormat Format, class Compare, bool Write>
 struct DepthOnlyStage {
   using Traits = DepthTraits<Format>;
   using Storage = typename Traits::Storage;
   // Hierarchical depth applies to LESS and LEQUAL into d32f: a block whose farthest stored depth is nearer
   // than everything the triangle has there cannot pass.
-  static constexpr bool kHiZ =
-      Format == DepthFormat::d32f && (Func == DepthFunc::less || Func == DepthFunc::lequal);
+  static constexpr bool kHiZ = Format == DepthFormat::d32f && kHiZCompare<Compare>;
 
-  DepthOnlyStage(DepthTarget* d, TileHiZ* h)
-      : depth(d), hiz(h), base(d->row<Storage>(0)), pitch(size_t(d->pitch())) {}
+  DepthOnlyStage(DepthTarget* d, TileHiZ* h, Compare c)
+      : depth(d), hiz(h), base(d->row<Storage>(0)), pitch(size_t(d->pitch())), compare(c) {}
 
   DepthTarget* depth;
   TileHiZ* hiz = nullptr;  // the tile's bounds, when kHiZ
   Storage* base;           // the target's row 0, and the elements between two rows: no reload per row
   size_t pitch;
+  [[no_unique_address]] Compare compare;
 
   // The triangle's per-segment constants: the column part of the depth plane (see plane_depth_columns) and the
   // row slope and polygon offset, splatted once.
@@ -67,7 +78,8 @@ struct DepthOnlyStage {
   bool block_hidden(const HiZPlane& hp, int32_t bx, int32_t by) const {
     if constexpr (kHiZ) {
       const float zmin = hp.min_depth(bx, by), zmax = hiz->farthest(bx, by);
-      return Func == DepthFunc::less ? zmin >= zmax : zmin > zmax;
+      constexpr bool kStrict = std::is_same_v<Compare, FixedDepthFunc<DepthFunc::less>>;
+      return kStrict ? zmin >= zmax : zmin > zmax;
     }
     return false;
   }
@@ -101,7 +113,7 @@ struct DepthOnlyStage {
     Storage* p = at.p;
     const auto frag = Traits::from_depth(plane_depth_clamped(c.zcol, c.dzdy, c.z_offset, at.y));
     const auto stored = Traits::load(p);
-    const simd::Mask pass = depth_compare<Func>(frag, stored) & covered;
+    const simd::Mask pass = compare(frag, stored) & covered;
     if constexpr (Write) {
       const auto next = simd::select(pass, stored, frag);
       Traits::store(p, next);

@@ -1,5 +1,6 @@
 // The depth test and depth write on eight pixels at a time, per depth format: converting the fragment depth to
-// the stored representation (CONVENTIONS), comparing with one of GL's eight functions, and writing under a mask.
+// the stored representation (CONVENTIONS), comparing with one of GL's eight functions (fixed at compile time,
+// or chosen at run time once per draw), and writing under a mask.
 #pragma once
 #include <cstdint>
 
@@ -41,7 +42,8 @@ struct DepthTraits<DepthFormat::d32f> {
   static void store(Storage* p, Value v) { v.store(p); }
 };
 
-// Lanes where `frag FUNC stored` holds.
+// Lanes where `frag FUNC stored` holds, the function fixed at compile time. GL's NaN rule on d32f: every
+// comparison is false with a NaN operand, except NOTEQUAL, which is true.
 template <DepthFunc Func, class Value>
 inline simd::Mask depth_compare(Value frag, Value stored) {
   using simd::Mask;
@@ -55,21 +57,73 @@ inline simd::Mask depth_compare(Value frag, Value stored) {
   if constexpr (Func == DepthFunc::gequal) return simd::cmp_le(stored, frag);
 }
 
-// Calls f.template operator()<Func>() with the compile-time depth function matching `func`: the draw-level
-// dispatch that keeps the per-pixel loop free of run-time choices.
-template <class F>
-decltype(auto) dispatch_depth_func(DepthFunc func, F&& f) {
-  switch (func) {
-    case DepthFunc::never: return f.template operator()<DepthFunc::never>();
-    case DepthFunc::less: return f.template operator()<DepthFunc::less>();
-    case DepthFunc::equal: return f.template operator()<DepthFunc::equal>();
-    case DepthFunc::lequal: return f.template operator()<DepthFunc::lequal>();
-    case DepthFunc::greater: return f.template operator()<DepthFunc::greater>();
-    case DepthFunc::notequal: return f.template operator()<DepthFunc::notequal>();
-    case DepthFunc::gequal: return f.template operator()<DepthFunc::gequal>();
-    case DepthFunc::always: break;
+// The depth test as a stage holds it: one function fixed at compile time, for the hot paths that specialise on it.
+template <DepthFunc Func>
+struct FixedDepthFunc {
+  template <class Value>
+  simd::Mask operator()(Value frag, Value stored) const { return depth_compare<Func>(frag, stored); }
+};
+
+// The depth test with the function chosen at run time, once per draw, without a branch per pixel: a comparison
+// falls in one of four classes (frag < stored, ==, >, or unordered: a NaN on d32f), and each function is the
+// set of classes it passes, one bit each. The SIMD form computes three comparisons and keeps the classes the
+// function's masks select; NOTEQUAL and ALWAYS are the only functions that pass the unordered class, and both
+// pass < and > too, so "not equal" stands for "< or > or unordered" where the unordered bit is set.
+class DepthCompare {
+ public:
+  static constexpr unsigned kLess = 1, kEqual = 2, kGreater = 4, kUnordered = 8;
+  static constexpr unsigned classes(DepthFunc f) {
+    switch (f) {
+      case DepthFunc::never: return 0;
+      case DepthFunc::less: return kLess;
+      case DepthFunc::equal: return kEqual;
+      case DepthFunc::lequal: return kLess | kEqual;
+      case DepthFunc::greater: return kGreater;
+      case DepthFunc::notequal: return kLess | kGreater | kUnordered;
+      case DepthFunc::gequal: return kGreater | kEqual;
+      case DepthFunc::always: break;
+    }
+    return kLess | kEqual | kGreater | kUnordered;
   }
-  return f.template operator()<DepthFunc::always>();
+
+  explicit DepthCompare(DepthFunc f)
+      : bits_(classes(f)),
+        less_(lanes(kLess)),
+        equal_(lanes(kEqual)),
+        greater_(lanes(kGreater)),
+        unordered_(lanes(kUnordered)) {}
+
+  // Lanes where `frag FUNC stored` holds (VecI32 for the unorm formats, VecF32 for d32f).
+  template <class Value>
+  simd::Mask operator()(Value frag, Value stored) const {
+    const simd::Mask eq = simd::cmp_eq(frag, stored);
+    return (simd::cmp_lt(frag, stored) & less_) | (simd::cmp_lt(stored, frag) & greater_) | (eq & equal_) |
+           and_not(unordered_, eq);
+  }
+  // One pixel (int32_t codes or floats), the same classes.
+  template <class T>
+  bool test(T frag, T stored) const {
+    const unsigned c = frag < stored ? kLess : frag == stored ? kEqual : frag > stored ? kGreater : kUnordered;
+    return (bits_ & c) != 0;
+  }
+
+ private:
+  simd::Mask lanes(unsigned c) const { return simd::Mask::from_bits((bits_ & c) ? 0xFFu : 0u); }
+  unsigned bits_;
+  simd::Mask less_, equal_, greater_, unordered_;
+};
+
+// Calls f(compare) with the depth test a depth-only draw runs: LESS and LEQUAL, the functions of shadow and depth
+// pre-passes, fixed at compile time (they use hierarchical depth, depth_stage.h); every other function through
+// the one run-time DepthCompare.
+template <class F>
+decltype(auto) dispatch_depth_only_func(DepthFunc func, F&& f) {
+  switch (func) {
+    case DepthFunc::less: return f(FixedDepthFunc<DepthFunc::less>{});
+    case DepthFunc::lequal: return f(FixedDepthFunc<DepthFunc::lequal>{});
+    default: break;
+  }
+  return f(DepthCompare(func));
 }
 
 template <class F>

@@ -19,24 +19,14 @@
 
 namespace raster {
 
-// Scalar depth test of one pixel, same conversion and comparison as the SIMD path.
-template <DepthFormat Format, DepthFunc Func>
+// Scalar depth conversion and load of one pixel, the same as the SIMD path's (the comparison: DepthCompare::test).
+template <DepthFormat Format>
 struct ScalarDepth {
   using Storage = typename DepthTraits<Format>::Storage;
   static auto convert(float z) {
     if constexpr (Format == DepthFormat::d16) return int32_t(std::nearbyint(z * 65535.0f));
     else if constexpr (Format == DepthFormat::d24) return int32_t(std::nearbyint(z * 16777215.0f));
     else return z;
-  }
-  static bool test(decltype(convert(0.0f)) f, decltype(convert(0.0f)) s) {
-    if constexpr (Func == DepthFunc::never) return false;
-    if constexpr (Func == DepthFunc::always) return true;
-    if constexpr (Func == DepthFunc::less) return f < s;
-    if constexpr (Func == DepthFunc::greater) return f > s;
-    if constexpr (Func == DepthFunc::equal) return f == s;
-    if constexpr (Func == DepthFunc::notequal) return f != s;
-    if constexpr (Func == DepthFunc::lequal) return f <= s;
-    if constexpr (Func == DepthFunc::gequal) return f >= s;
   }
   static decltype(convert(0.0f)) load(const Storage* p) {
     if constexpr (Format == DepthFormat::d32f) return *p;
@@ -57,10 +47,11 @@ inline simd::VecF32 clamp01(simd::VecF32 z) {
   return simd::min(simd::VecF32::splat(1.0f), simd::max(simd::VecF32::splat(0.0f), z));
 }
 
-template <class Shader, DepthFormat Format, DepthFunc Func>
+// One instantiation per shader and depth format; the depth function is a run-time DepthCompare chosen per draw.
+template <class Shader, DepthFormat Format>
 struct ShadedStage {
   using V = typename Shader::Varyings;
-  using SD = ScalarDepth<Format, Func>;
+  using SD = ScalarDepth<Format>;
   using Traits = DepthTraits<Format>;
   static constexpr bool kEarlyZ = !shader_discards<Shader>() && !shader_writes_depth<Shader>();
   static constexpr bool kPair = HasPairFragmentStage<Shader>;
@@ -69,7 +60,8 @@ struct ShadedStage {
   const TriangleInterp<V>* interps;  // of the chunk being executed
   DepthTarget* depth;                // may be null (no depth buffer: test always passes, nothing written)
   ColorTarget* color;                // may be null
-  bool depth_write, color_write;
+  DepthCompare depth_test;           // the draw's function (ALWAYS without a depth test)
+  bool depth_write, color_write;     // depth_write is false for NEVER, which writes nothing
   BlendMode blend;
 
   void block(const TriangleSetup& t, int32_t bx, int32_t by, uint64_t mask) const {
@@ -117,7 +109,7 @@ struct ShadedStage {
     for (int l = 0; l < 4; ++l) {
       if (!(live >> l & 1u)) continue;
       const int32_t px = x + (l & 1), py = y + (l >> 1);
-      if (depth && depth_write && Func != DepthFunc::never) {
+      if (depth && depth_write) {
         Storage* d = depth->row<Storage>(py) + px;
         *d = Storage(SD::convert(z[l]));
       }
@@ -130,7 +122,7 @@ struct ShadedStage {
     for (int l = 0; l < 4; ++l) {
       if (!(live >> l & 1u)) continue;
       const auto* d = depth->row<typename SD::Storage>(y + (l >> 1)) + x + (l & 1);
-      if (SD::test(SD::convert(z[l]), SD::load(d))) pass |= 1u << l;
+      if (depth_test.test(SD::convert(z[l]), SD::load(d))) pass |= 1u << l;
     }
     return pass;
   }
@@ -222,7 +214,7 @@ struct ShadedStage {
     typename Traits::Value stored{};
     if (row.d0) stored = simd::load_rows4(row.d0 + dx, row.d1 + dx);
     if constexpr (kEarlyZ) {
-      if (row.d0) live &= depth_compare<Func>(Traits::from_depth(z), stored).bits();
+      if (row.d0) live &= depth_test(Traits::from_depth(z), stored).bits();
       if (!live) return;
     }
     QuadPairIn<V> in;
@@ -236,10 +228,10 @@ struct ShadedStage {
     if constexpr (shader_writes_depth<Shader>()) z = clamp01(out.depth);
     const auto frag = Traits::from_depth(z);
     if constexpr (!kEarlyZ) {
-      if (row.d0) live &= depth_compare<Func>(frag, stored).bits();
+      if (row.d0) live &= depth_test(frag, stored).bits();
     }
     if (!live) return;
-    if (row.d0 && depth_write && Func != DepthFunc::never)
+    if (row.d0 && depth_write)
       simd::store_rows4(simd::select(simd::Mask::from_bits(live), stored, frag), row.d0 + dx, row.d1 + dx);
     if (row.c0) write_packed_color(row.c0 + dx, row.c1 + dx, out, live);
     else if (color && color_write) write_pair_color(x, y, out, live);

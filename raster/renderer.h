@@ -307,53 +307,57 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   const int ntx = tx1 - tx0 + 1, nty = ty1 - ty0 + 1;
   const bool test = state.depth_test && targets.depth;
   const DepthFunc func = test ? state.depth_func : DepthFunc::always;
-  const bool depth_write = test && state.depth_write;
+  const bool depth_write = test && state.depth_write && func != DepthFunc::never;  // NEVER writes nothing
 
+  // One back end per depth format; the depth function is a run-time DepthCompare for shaded draws and, apart
+  // from LESS and LEQUAL, for depth-only draws (dispatch_depth_only_func).
   dispatch_depth_format(format, [&]<DepthFormat F>() {
-    dispatch_depth_func(func, [&]<DepthFunc Func>() {
-      auto run_tiles = [&](auto make_stage, bool use_hiz = false) {
-        pool_.parallel_for(size_t(ntx) * size_t(nty), [&](size_t k) {
-          const int tx = tx0 + int(k % size_t(ntx)), ty = ty0 + int(k / size_t(ntx));
-          const PixelRect rect{std::max(sp.clip.x0, tx << kTileSizeLog2), std::max(sp.clip.y0, ty << kTileSizeLog2),
-                               std::min(sp.clip.x1, ((tx + 1) << kTileSizeLog2) - 1),
-                               std::min(sp.clip.y1, ((ty + 1) << kTileSizeLog2) - 1)};
-          const size_t tile = size_t(ty) * size_t(grid.tiles_x) + size_t(tx);
-          bool any = false;
-          for (const auto& chp : chunks) {
-            const auto& offsets = bins_of(*chp).offsets;
-            any |= offsets[tile] != offsets[tile + 1];
+    auto run_tiles = [&](auto make_stage, bool use_hiz = false) {
+      pool_.parallel_for(size_t(ntx) * size_t(nty), [&](size_t k) {
+        const int tx = tx0 + int(k % size_t(ntx)), ty = ty0 + int(k / size_t(ntx));
+        const PixelRect rect{std::max(sp.clip.x0, tx << kTileSizeLog2), std::max(sp.clip.y0, ty << kTileSizeLog2),
+                             std::min(sp.clip.x1, ((tx + 1) << kTileSizeLog2) - 1),
+                             std::min(sp.clip.y1, ((ty + 1) << kTileSizeLog2) - 1)};
+        const size_t tile = size_t(ty) * size_t(grid.tiles_x) + size_t(tx);
+        bool any = false;
+        for (const auto& chp : chunks) {
+          const auto& offsets = bins_of(*chp).offsets;
+          any |= offsets[tile] != offsets[tile + 1];
+        }
+        if (!any) return;
+        TileHiZ hiz;  // hierarchical depth, for the stages that use it
+        if (use_hiz) hiz.load(*targets.depth, tx << kTileSizeLog2, ty << kTileSizeLog2);
+        for (const auto& chp : chunks) {
+          const Chunk& ch = *chp;
+          const auto stage = make_stage(ch, hiz);
+          const ChunkBins<Record>& bins = bins_of(ch);
+          const uint32_t b = bins.offsets[tile], e = bins.offsets[tile + 1];
+          for (uint32_t i = b; i < e; ++i) {
+            const Record& t = bins.binned[i];
+            if constexpr (kShaded) rasterize(t, rect, stage);
+            else if (t.full == kNoFullSetup) rasterize(t, rect, stage);
+            else rasterize(ch.full.template view<TriangleSetup>()[t.full], rect, stage);
           }
-          if (!any) return;
-          TileHiZ hiz;  // hierarchical depth, for the stages that use it
-          if (use_hiz) hiz.load(*targets.depth, tx << kTileSizeLog2, ty << kTileSizeLog2);
-          for (const auto& chp : chunks) {
-            const Chunk& ch = *chp;
-            const auto stage = make_stage(ch, hiz);
-            const ChunkBins<Record>& bins = bins_of(ch);
-            const uint32_t b = bins.offsets[tile], e = bins.offsets[tile + 1];
-            for (uint32_t i = b; i < e; ++i) {
-              const Record& t = bins.binned[i];
-              if constexpr (kShaded) rasterize(t, rect, stage);
-              else if (t.full == kNoFullSetup) rasterize(t, rect, stage);
-              else rasterize(ch.full.template view<TriangleSetup>()[t.full], rect, stage);
-            }
-          }
-        });
-      };
-      if constexpr (kShaded) {
-        run_tiles([&](const Chunk& ch, TileHiZ&) {
-          return ShadedStage<Shader, F, Func>{&shader, ch.interps.view<TriangleInterp<V>>(), test ? targets.depth : nullptr,
-                                               targets.color, depth_write, state.color_write, state.blend};
-        });
-      } else if (targets.depth && test) {
+        }
+      });
+    };
+    if constexpr (kShaded) {
+      const DepthCompare compare(func);
+      run_tiles([&](const Chunk& ch, TileHiZ&) {
+        return ShadedStage<Shader, F>{&shader,      ch.interps.view<TriangleInterp<V>>(),
+                                      test ? targets.depth : nullptr, targets.color, compare, depth_write,
+                                      state.color_write, state.blend};
+      });
+    } else if (targets.depth && test) {
+      dispatch_depth_only_func(func, [&]<class Compare>(Compare compare) {
         auto depth_only = [&]<bool kWrite>() {
-          using Stage = DepthOnlyStage<F, Func, kWrite>;
-          run_tiles([&](const Chunk&, TileHiZ& hiz) { return Stage{targets.depth, &hiz}; }, Stage::kHiZ);
+          using Stage = DepthOnlyStage<F, Compare, kWrite>;
+          run_tiles([&](const Chunk&, TileHiZ& hiz) { return Stage{targets.depth, &hiz, compare}; }, Stage::kHiZ);
         };
         if (depth_write) depth_only.template operator()<true>();
         else depth_only.template operator()<false>();
-      }
-    });
+      });
+    }
   });
   return stats;
 }
