@@ -1,7 +1,7 @@
 // How a light's shadow map is laid out: a ShadowMapSet of one or more passes, each a viewport with view and
 // projection matrices inside one of the set's depth targets. The classic technique has one pass; cascades or
 // cube faces would have several, chosen per pixel when reading. Building (depth_pass.h) and reading
-// (shadow_receiver.h) both work from this plain description.
+// (classic.h, omni_read.h and the other readers) both work from this plain description.
 #pragma once
 #include <memory>
 #include <string>

@@ -3,7 +3,7 @@
 // one-line descriptions, the table of per-technique defaults (which light types each serves, map size and depth
 // format) and each technique's own parameters. Header-only and constexpr, with no dependency beyond
 // raster/formats.h, so every layer can read it; the implementations of the techniques are found through
-// registry.h.
+// technique.h (the interface and the registry of implementations, registry.cpp).
 #pragma once
 #include <array>
 #include <cmath>
@@ -130,7 +130,7 @@ struct TechniqueInfo {
   std::string_view name;
   std::string_view description;
   uint8_t lights;              // light_bit() of every light type it serves
-  bool built;                  // implemented (registry.h); a scene or option naming an unbuilt one is refused
+  bool built;                  // implemented (a row in registry.cpp); a scene or option naming an unbuilt one is refused
   uint32_t map_size;           // texels per side: of the map, per face or per caster
   DepthFormat depth_format;
   std::string_view encoding;   // what the map stores (EXR `shadowlab:encoding`)
