@@ -118,7 +118,8 @@ inline constexpr ParamSpec kProjectiveParams[] = {
      0, 1e6},
     {"fade_end", "--fade-end", ParamKind::number, "0", "projective: distance where the shadow has faded (0: never)",
      0, 1e6},
-    {"decimate", "--decimate", ParamKind::flag, "false", "projective: decimate casters before drawing their masks"},
+    {"decimate", "--decimate", ParamKind::flag, "true",
+     "projective: draw each mask from the caster clustered to half a map texel (same silhouette, fewer triangles)"},
 };
 
 // ---- The defaults table: one row per technique, indexed by Technique.

@@ -187,6 +187,23 @@ TEST(ProjectiveFrame, MapsAsExrRecords) {
   EXPECT_EQ(projective, 5u);
 }
 
+// A light that gives no parameter gets the technique's own defaults: the vocabulary's table and
+// ProjectiveSettings agree field by field.
+TEST(ProjectiveFrame, TableDefaultsAreTheTechniqueDefaults) {
+  shading::tech::ShadowConfig c;
+  c.technique = shading::tech::Technique::projective;
+  c.map_size = int(shading::tech::info(c.technique).map_size);
+  const shading::tech::ProjectiveSettings p = frame::resolve_projective(c), d;
+  EXPECT_EQ(p.map_size, d.map_size);
+  EXPECT_EQ(p.mode, d.mode);
+  EXPECT_EQ(p.caster_shade, d.caster_shade);
+  EXPECT_EQ(p.lod_bias, d.lod_bias);
+  EXPECT_EQ(p.fade_start, d.fade_start);
+  EXPECT_EQ(p.fade_end, d.fade_end);
+  EXPECT_EQ(p.decimate, d.decimate);
+  EXPECT_EQ(p.max_textures, d.max_textures);
+}
+
 TEST(ProjectiveFrame, BadParamsNameTheirKey) {
   raster::Renderer r(0);
   auto expect_bad = [&](const char* key, scenes::TechniqueParam value, const std::string& where) {
