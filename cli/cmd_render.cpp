@@ -106,14 +106,9 @@ int run_render(const RenderArgs& a) {
       a.shadow_size_option->count() ? std::optional<int>(check_side(a.shadow_size, "--shadow-size")) : std::nullopt;
   if (a.threads < -1) throw CliError("--threads", "expected 0 or more threads");
   if (a.frames < 1) throw CliError("--frames", "expected 1 or more frames");
-  for (const auto& [key, value] : a.params)
-    for (const auto* p : all_params())
-      if (p->key == key)
-        for (const shading::tech::TechniqueInfo& t : shading::tech::kTechniques)
-          if (shading::tech::find_param(t.id, key)) {
-            if (auto why = shading::tech::param_problem(t.id, key, value)) throw CliError(std::string(p->option), *why);
-            break;
-          }
+  for (const shading::tech::ParamSpec* p : all_params())
+    if (const auto it = a.params.find(std::string(p->key)); it != a.params.end())
+      if (auto why = shading::tech::value_problem(*p, it->second)) throw CliError(std::string(p->option), *why);
   if (a.animate) {
     if (!std::isfinite(a.fps) || !(a.fps > 0.0)) throw CliError("--fps", "expected a frame rate above 0");
     bool animated = false;

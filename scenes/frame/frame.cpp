@@ -35,13 +35,12 @@ std::vector<CameraVertex> camera_vertices(const scenes::Mesh& m) {
 void check_params_used(const FrameConfig& config, const std::vector<ResolvedLight>& lights) {
   for (const auto& [key, value] : config.params) {
     bool used = false;
-    for (const ResolvedLight& r : lights) used |= tech::find_param(r.config.technique, key) != nullptr;
-    if (used) {
-      for (const ResolvedLight& r : lights)
-        if (tech::find_param(r.config.technique, key))
-          if (auto why = tech::param_problem(r.config.technique, key, value)) throw FrameError("params." + key + ": " + *why);
-      continue;
-    }
+    for (const ResolvedLight& r : lights)
+      if (const tech::ParamSpec* spec = tech::find_param(r.config.technique, key)) {
+        if (auto why = tech::value_problem(*spec, value)) throw FrameError("params." + key + ": " + *why);
+        used = true;
+      }
+    if (used) continue;
     std::string takers;
     for (const tech::TechniqueInfo& t : tech::kTechniques)
       if (t.built && tech::find_param(t.id, key)) takers += (takers.empty() ? "" : ", ") + std::string(t.name);

@@ -39,29 +39,29 @@ const ParamSpec& Params::spec(std::string_view key) const {
 
 namespace {
 // The given value of `key`, checked against its spec; null when absent.
-const ParamValue* checked(const ShadowConfig& c, const ParamSpec&, std::string_view key) {
-  const auto it = c.params.find(std::string(key));
+const ParamValue* checked(const ShadowConfig& c, const ParamSpec& spec) {
+  const auto it = c.params.find(std::string(spec.key));
   if (it == c.params.end()) return nullptr;
-  if (auto why = param_problem(c.technique, it->first, it->second)) throw TechniqueError(c.where + it->first + ": " + *why);
+  if (auto why = value_problem(spec, it->second)) throw TechniqueError(c.where + it->first + ": " + *why);
   return &it->second;
 }
 }  // namespace
 
 bool Params::flag(std::string_view key) const {
   const ParamSpec& s = spec(key);
-  if (const ParamValue* v = checked(c_, s, key)) return std::get<bool>(*v);
+  if (const ParamValue* v = checked(c_, s)) return std::get<bool>(*v);
   return s.fallback == "true";
 }
 
 double Params::number(std::string_view key) const {
   const ParamSpec& s = spec(key);
-  if (const ParamValue* v = checked(c_, s, key)) return std::get<double>(*v);
+  if (const ParamValue* v = checked(c_, s)) return std::get<double>(*v);
   return std::strtod(std::string(s.fallback).c_str(), nullptr);
 }
 
 std::string Params::text(std::string_view key) const {
   const ParamSpec& s = spec(key);
-  if (const ParamValue* v = checked(c_, s, key)) return std::get<std::string>(*v);
+  if (const ParamValue* v = checked(c_, s)) return std::get<std::string>(*v);
   return std::string(s.fallback);
 }
 

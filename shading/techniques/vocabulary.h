@@ -269,21 +269,10 @@ inline std::string refusal(Technique t, LightType l) {
   return {};
 }
 
-// What is wrong with `value` as parameter `key` of technique t: a key it does not take, the wrong kind, out of
-// range or not among the choices; none when it is fine. Text values are checked by the technique itself.
-inline std::optional<std::string> param_problem(Technique technique, const std::string& key, const ParamValue& value) {
-  const ParamSpec* spec = find_param(technique, key);
-  if (!spec) {
-    std::string known;
-    auto add = [&](std::span<const ParamSpec> list) {
-      for (const auto& p : list) known += (known.empty() ? "" : ", ") + std::string(p.key);
-    };
-    add(info(technique).params);
-    if (info(technique).reads_filter) add(kFilterParams);
-    return "technique " + std::string(to_string(technique)) + " takes no parameter '" + key + "' (it takes: " +
-           (known.empty() ? std::string("none") : known) + ")";
-  }
-  switch (spec->kind) {
+// What is wrong with `value` for a parameter of this spec: the wrong kind, out of range or not among the
+// choices; none when it is fine. Text values are checked by the technique itself.
+inline std::optional<std::string> value_problem(const ParamSpec& spec, const ParamValue& value) {
+  switch (spec.kind) {
     case ParamKind::flag:
       if (!std::holds_alternative<bool>(value)) return std::string("expected true or false");
       return std::nullopt;
@@ -291,17 +280,16 @@ inline std::optional<std::string> param_problem(Technique technique, const std::
     case ParamKind::integer: {
       const double* v = std::get_if<double>(&value);
       char range[64];
-      std::snprintf(range, sizeof range, "[%g, %g]", spec->lo, spec->hi);
-      if (!v || !std::isfinite(*v) || *v < spec->lo || *v > spec->hi)
-        return std::string(spec->kind == ParamKind::integer ? "expected a whole number in " : "expected a number in ") +
-               range;
-      if (spec->kind == ParamKind::integer && *v != std::floor(*v)) return std::string("expected a whole number in ") + range;
+      std::snprintf(range, sizeof range, "[%g, %g]", spec.lo, spec.hi);
+      const bool whole = spec.kind == ParamKind::integer;
+      if (!v || !std::isfinite(*v) || *v < spec.lo || *v > spec.hi || (whole && *v != std::floor(*v)))
+        return std::string(whole ? "expected a whole number in " : "expected a number in ") + range;
       return std::nullopt;
     }
     case ParamKind::choice: {
       const std::string* v = std::get_if<std::string>(&value);
       std::string known;
-      for (std::string_view c : spec->choices)
+      for (std::string_view c : spec.choices)
         if (!c.empty()) {
           if (v && *v == c) return std::nullopt;
           known += (known.empty() ? "" : ", ") + std::string(c);
@@ -313,6 +301,19 @@ inline std::optional<std::string> param_problem(Technique technique, const std::
       return std::nullopt;
   }
   return std::nullopt;
+}
+
+// What is wrong with `value` as parameter `key` of technique t: a key it does not take, or value_problem.
+inline std::optional<std::string> param_problem(Technique technique, const std::string& key, const ParamValue& value) {
+  if (const ParamSpec* spec = find_param(technique, key)) return value_problem(*spec, value);
+  std::string known;
+  auto add = [&](std::span<const ParamSpec> list) {
+    for (const auto& p : list) known += (known.empty() ? "" : ", ") + std::string(p.key);
+  };
+  add(info(technique).params);
+  if (info(technique).reads_filter) add(kFilterParams);
+  return "technique " + std::string(to_string(technique)) + " takes no parameter '" + key + "' (it takes: " +
+         (known.empty() ? std::string("none") : known) + ")";
 }
 
 }  // namespace shading::tech
