@@ -3,8 +3,11 @@
 // each light read through its LightShadow. export_maps turns the built maps into EXR records (see frame.h).
 #include "scenes/frame/frame.h"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <optional>
+#include <variant>
 
 #include <glm/matrix.hpp>
 
@@ -14,6 +17,8 @@
 #include "scenes/frame/frame_lights.h"
 #include "scenes/frame/projective_shaders.h"
 #include "scenes/scene_queries.h"
+#include "shading/techniques/depth_pass.h"
+#include "shading/techniques/view_frustum.h"
 
 namespace frame {
 
@@ -49,6 +54,51 @@ void check_params_used(const FrameConfig& config, const std::vector<ResolvedLigh
   }
 }
 
+// The camera as the view-following techniques see it.
+tech::CameraView camera_view(const scenes::Camera& camera, float aspect) {
+  tech::CameraView v;
+  v.view = scenes::view_matrix(camera);
+  v.proj = scenes::projection_matrix(camera, aspect);
+  v.eye = camera.position;
+  const glm::vec3 f = camera.target - camera.position;
+  v.forward = glm::length(f) > 0.0f ? glm::normalize(f) : glm::vec3(0.0f, 0.0f, -1.0f);
+  std::visit([&](const auto& p) { v.near = p.near, v.far = p.far; }, camera.projection);
+  v.perspective = std::holds_alternative<scenes::Perspective>(camera.projection);
+  return v;
+}
+
+// What the camera sees (tech::VisibleSamples): a depth-only pass of the receivers at the frame's size, each
+// covered pixel's centre taken back to world space.
+tech::VisibleSamples visible_samples(const scenes::Scene& scene, const glm::mat4& view_proj,
+                                     const tech::CameraView& cam, int width, int height, raster::Renderer& renderer) {
+  const scenes::TriangleSoup receivers = scenes::flatten(scene, scenes::InstanceFilter::receivers);
+  raster::DepthTarget depth(width, height, raster::DepthFormat::d24);
+  depth.clear(1.0f);
+  raster::DrawState s;
+  s.color_write = false;
+  renderer.draw(raster::RenderTargets{&depth, nullptr}, s, tech::WorldDepthShader{view_proj},
+                std::span<const glm::vec3>(receivers.positions), std::span<const uint32_t>(receivers.indices));
+  const glm::mat4 inv = glm::inverse(view_proj);
+  tech::VisibleSamples v;
+  v.min_distance = std::numeric_limits<float>::infinity();
+  v.max_distance = -v.min_distance;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float z = depth.value(x, y);
+      if (!(z < 1.0f)) continue;
+      const glm::vec4 ndc(2.0f * (float(x) + 0.5f) / float(width) - 1.0f,
+                          2.0f * (float(y) + 0.5f) / float(height) - 1.0f, 2.0f * z - 1.0f, 1.0f);
+      const glm::vec4 w = inv * ndc;
+      const glm::vec3 p = glm::vec3(w) / w.w;
+      const float d = tech::view_distance(cam, p);
+      v.min_distance = std::min(v.min_distance, d);
+      v.max_distance = std::max(v.max_distance, d);
+      v.points.push_back(p);
+    }
+  if (v.points.empty()) v.min_distance = v.max_distance = 0.0f;
+  return v;
+}
+
 }  // namespace
 
 Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster::Renderer& renderer,
@@ -75,6 +125,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   const auto t_shadow = Clock::now();
   std::optional<scenes::TriangleSoup> casters;  // flattened once, when a light first needs them
   std::optional<tech::PlanInputs> inputs;       // scene bounds, computed once
+  std::optional<tech::VisibleSamples> visible;  // the camera's depth pre-pass, run when a technique asks
   std::vector<ProjectiveLight> projective_lights;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     ResolvedLight& r = resolved[i];
@@ -92,8 +143,14 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
         inputs->casters = to_box(scenes::scene_bounds(scene, scenes::InstanceFilter::casters));
         inputs->receivers = tech::camera_receiver_box(
             view_proj, to_box(scenes::scene_bounds(scene, scenes::InstanceFilter::receivers)));
+        inputs->scene_receivers = to_box(scenes::scene_bounds(scene, scenes::InstanceFilter::receivers));
         inputs->camera_view_proj = view_proj;
         inputs->eye = camera.position;
+        inputs->camera = camera_view(camera, aspect);
+        inputs->visible = [&, cam = inputs->camera]() -> const tech::VisibleSamples& {
+          if (!visible) visible = visible_samples(scene, view_proj, cam, config.width, config.height, renderer);
+          return *visible;
+        };
       }
       if (!casters) casters = scenes::flatten(scene, scenes::InstanceFilter::casters);
       try {

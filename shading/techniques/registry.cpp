@@ -3,7 +3,9 @@
 // names, light types, defaults and parameters; a test checks that the two agree on which are built.
 #include <cstdlib>
 
+#include "shading/techniques/cascades.h"
 #include "shading/techniques/classic.h"
+#include "shading/techniques/frustum_faces.h"
 #include "shading/techniques/omni_read.h"
 #include "shading/techniques/technique.h"
 
@@ -18,6 +20,9 @@ constexpr TechniqueImpl kRegistry[] = {
     {Technique::paraboloid, Application::light_visibility, &plan_paraboloid},
     {Technique::pyramid, Application::light_visibility, &plan_pyramid},
     {Technique::projective, Application::receiver_passes, nullptr},
+    {Technique::cascades, Application::light_visibility, &plan_cascades},
+    {Technique::lispsm, Application::light_visibility, &plan_lispsm},
+    {Technique::frustum_faces, Application::light_visibility, &plan_frustum_faces},
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 // MapRecord per file, with every pass's matrices). The frame renderer (scenes/frame) only talks to this
 // interface; adding a technique is its own files plus one row in registry.cpp (docs/architecture.md).
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -65,12 +66,33 @@ class Params {
   const ShadowConfig& c_;
 };
 
+// The camera a frame is seen through, for the techniques that follow the view (cascades, LiSPSM, frustum faces).
+struct CameraView {
+  glm::mat4 view{1.0f}, proj{1.0f};  // GL conventions: the camera looks down −z of its view space
+  glm::vec3 eye{0.0f};
+  glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit; view distance = dot(p − eye, forward)
+  float near = 0.1f, far = 100.0f;       // view distances of the projection's clip planes
+  bool perspective = true;
+};
+
+// What the camera actually sees (sample-distribution fitting): the world positions of the covered pixels of a
+// depth-only pre-pass over the receivers, and their range of view distances. Empty when nothing is covered.
+struct VisibleSamples {
+  std::vector<glm::vec3> points;
+  float min_distance = 0.0f, max_distance = 0.0f;
+};
+
 // What a plan may look at besides the light: the scene's bounds and the camera.
 struct PlanInputs {
   Box casters;                     // bounds of every shadow caster
   Box receivers;                   // the camera frustum's part of the receivers' bounds (camera_receiver_box)
+  Box scene_receivers;             // bounds of every receiver, wherever the camera looks
   glm::mat4 camera_view_proj{1.0f};
   glm::vec3 eye{0.0f};
+  CameraView camera;
+  // The camera's visible samples, computed on first call (a camera depth pre-pass) and kept for the frame;
+  // null where the caller has none to offer.
+  std::function<const VisibleSamples&()> visible;
 };
 
 // World-space caster triangles, drawn into every pass.

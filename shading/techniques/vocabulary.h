@@ -31,9 +31,9 @@ enum class Technique : uint8_t {
   paraboloid,     // dual paraboloid (one paraboloid for a hemispherical light)
   pyramid,        // 180° light: one square map split into four triangles
   projective,     // per-caster black-on-white projective textures (2000)
-  cascades,       // not built yet: cascaded maps for a directional light
-  lispsm,         // not built yet: light-space perspective shadow maps
-  frustum_faces,  // not built yet: perspective maps cut from the light-facing faces of the view frustum
+  cascades,       // cascaded maps over slices of the view frustum (directional)
+  lispsm,         // light-space perspective shadow map (directional)
+  frustum_faces,  // perspective maps cut from the light-facing faces of the view frustum (directional, 2003)
 };
 
 // How a map is read. Each is a compile-time filter type (shadow_filters.h); the choice is made once per batch.
@@ -122,6 +122,37 @@ inline constexpr ParamSpec kProjectiveParams[] = {
      "projective: draw each mask from the caster clustered to half a map texel (same silhouette, fewer triangles)"},
 };
 
+// Shared by the view-following techniques (cascades, lispsm, frustum-faces).
+inline constexpr ParamSpec kViewRangeParam = {
+    "view_range", "--view-range", ParamKind::choice, "scene",
+    "cascades, lispsm, frustum-faces: cover the view frustum where receivers can be, or only what the camera "
+    "sees (a camera depth pre-pass: sample distribution)", 0, 0, {"scene", "visible"}};
+inline constexpr ParamSpec kMapLayoutParam = {
+    "map_layout", "--map-layout", ParamKind::choice, "atlas",
+    "cascades, frustum-faces: all maps in one atlas target (two per row) or one target each", 0, 0,
+    {"atlas", "separate"}};
+inline constexpr ParamSpec kCascadeParams[] = {
+    {"cascades", "--cascades", ParamKind::integer, "4", "cascades: number of slices of the view frustum", 1, 4},
+    {"split_lambda", "--split-lambda", ParamKind::number, "0.75",
+     "cascades: practical split scheme, 1 logarithmic, 0 uniform", 0, 1},
+    {"stabilize", "--stabilize", ParamKind::flag, "false",
+     "cascades: texel-snapped maps around each slice's bounding sphere (no shimmer, less resolution)"},
+    {"cascade_blend", "--cascade-blend", ParamKind::number, "0",
+     "cascades: fraction of a slice, at its far end, blended into the next slice's map", 0, 0.5},
+    {"cascade_warp", "--cascade-warp", ParamKind::choice, "none",
+     "cascades: each slice's map orthographic, or warped by LiSPSM", 0, 0, {"none", "lispsm"}},
+    kMapLayoutParam,
+    kViewRangeParam,
+};
+inline constexpr ParamSpec kLispsmParams[] = {kViewRangeParam};
+inline constexpr ParamSpec kFaceParams[] = {
+    {"face_warp", "--face-warp", ParamKind::choice, "exact",
+     "frustum-faces: each map exactly covers its face (projection centre at the eye), or its centre is moved "
+     "back by LiSPSM's rule", 0, 0, {"exact", "lispsm"}},
+    kMapLayoutParam,
+    kViewRangeParam,
+};
+
 // ---- The defaults table: one row per technique, indexed by Technique.
 inline constexpr uint8_t light_bit(LightType t) { return uint8_t(1u << unsigned(t)); }
 inline constexpr uint8_t kAllLights = 0xF;
@@ -157,13 +188,13 @@ inline constexpr TechniqueInfo kTechniques[] = {
      "per-caster projective shadow textures (black on white) cast onto receivers",
      light_bit(LightType::directional) | light_bit(LightType::spot) | light_bit(LightType::point), true, 128,
      DepthFormat::d16, "caster-mask", kProjectiveParams, false},
-    {Technique::cascades, "cascades", "cascaded shadow maps along the view frustum",
-     light_bit(LightType::directional), false, 1024, DepthFormat::d16, "window-depth", {}, true},
-    {Technique::lispsm, "lispsm", "light-space perspective shadow maps",
-     light_bit(LightType::directional), false, 1024, DepthFormat::d16, "window-depth", {}, true},
+    {Technique::cascades, "cascades", "cascaded shadow maps: 1-4 slices of the view frustum, one map each",
+     light_bit(LightType::directional), true, 1024, DepthFormat::d16, "window-depth", kCascadeParams, true},
+    {Technique::lispsm, "lispsm", "light-space perspective shadow map: one map warped along the view direction",
+     light_bit(LightType::directional), true, 2048, DepthFormat::d24, "window-depth", kLispsmParams, true},
     {Technique::frustum_faces, "frustum-faces",
-     "perspective maps from the light-facing faces of the view frustum",
-     light_bit(LightType::directional), false, 1024, DepthFormat::d16, "window-depth", {}, true},
+     "perspective maps cut from the light-facing faces of the view frustum (2003)",
+     light_bit(LightType::directional), true, 1024, DepthFormat::d24, "window-depth", kFaceParams, true},
 };
 
 inline constexpr NamedEntry kLightTypeNames[] = {

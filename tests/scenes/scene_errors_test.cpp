@@ -99,10 +99,7 @@ TEST(SceneErrors, UnknownNames) {
             "normal)");
   EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"technique": "cube"}}]})"),
             "scene.json: lights[0].shadow.technique: technique cube does not serve directional lights (it serves: "
-            "point, hemispherical) (use: none, shadowmap, projective)");
-  EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"technique": "cascades"}}]})"),
-            "scene.json: lights[0].shadow.technique: technique cascades is not built yet (use: none, shadowmap, "
-            "projective)");
+            "point, hemispherical) (use: none, shadowmap, projective, cascades, lispsm, frustum-faces)");
   EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "shadow": {"technique": "cube", "params": {"fit": "auto"}}}]})"),
             "scene.json: lights[0].shadow.params.fit: technique cube takes no parameter 'fit' (it takes: seamless, "
             "pcf_taps, stratify)");

@@ -12,5 +12,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_agreement_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_density_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_golden_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/view_following_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/view_following_frame_test.cpp
 )
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::techniques shadowlab::frame)

@@ -1,0 +1,171 @@
+// Cascaded shadow maps and LiSPSM: planning the slices, reading them per pixel (see cascades.h).
+#include "shading/techniques/cascades.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "shading/techniques/slice_set.h"
+
+namespace shading::tech {
+
+namespace {
+
+Box merged(const Box& a, const Box& b) { return Box{glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
+
+// Rounds x > 0 up to a multiple of 1/64 of the power of two below it: small changes of x (a camera moving by a
+// fraction of a texel) leave it unchanged, so a stabilised map keeps its size.
+float quantize_up(float x) {
+  if (!(x > 0.0f)) return x;
+  const float step = std::exp2(std::floor(std::log2(x))) / 64.0f;
+  return std::ceil(x / step) * step;
+}
+
+// Centre (world) and radius of a slice's bounding sphere, the radius from view-space corners only (so it does not
+// change as the camera moves or turns) and quantised up.
+void slice_sphere(const CameraView& cam, float a, float b, glm::vec3& centre, float& radius) {
+  CameraView local = cam;
+  local.view = glm::mat4(1.0f);
+  const auto corners = slice_corners(local, a, b);
+  glm::vec3 c(0.0f);
+  for (const glm::vec3& p : corners) c += p / 8.0f;
+  float r = 0.0f;
+  for (const glm::vec3& p : corners) r = std::max(r, glm::length(p - c));
+  radius = quantize_up(r);
+  centre = glm::vec3(glm::inverse(cam.view) * glm::vec4(c, 1.0f));
+}
+
+}  // namespace
+
+CascadePlan plan_cascade_fits(const LightDesc& light, const CascadeSettings& s, int map_size, const PlanInputs& in) {
+  const CameraView& cam = in.camera;
+  const VisibleSamples* visible = nullptr;
+  ViewRange range;
+  if (s.visible) {
+    if (!in.visible) throw std::logic_error("plan_cascade_fits: visible fitting without visible samples");
+    visible = &in.visible();
+    range = visible_view_range(cam, *visible);
+  } else {
+    range = receiver_view_range(cam, in.receivers);
+  }
+  if (s.stabilize && !s.visible) range = ViewRange{cam.near, std::min(cam.far, quantize_up(range.far))};
+
+  CascadePlan plan;
+  plan.splits = practical_splits(range.near, range.far, s.count, s.lambda);
+  const Box scene = merged(in.casters, in.scene_receivers);
+  std::vector<glm::vec3> points;
+  for (int k = 0; k < s.count; ++k) {
+    const float a = plan.splits[size_t(k)], b = plan.splits[size_t(k) + 1];
+    const auto corners = slice_corners(cam, a, b);
+    // The slice's receivers: the slice clipped to the receivers' bounds (its corners when they do not meet).
+    const std::vector<glm::vec3> clipped = clip_slice_to_box(corners, in.scene_receivers);
+    std::span<const glm::vec3> body = corners;
+    if (!clipped.empty()) body = clipped;
+    if (visible) {
+      points.clear();
+      for (const glm::vec3& p : visible->points) {
+        const float d = view_distance(cam, p);
+        if (d >= a && d <= b) points.push_back(p);
+      }
+      if (!points.empty()) body = points;
+    }
+    if (s.lispsm) {
+      plan.fits.push_back(fit_lispsm(light.direction, body, in.casters, cam, a, b));
+    } else if (s.stabilize) {
+      glm::vec3 centre;
+      float radius;
+      slice_sphere(cam, a, b, centre, radius);
+      plan.fits.push_back(fit_stable(light.direction, centre, radius, map_size, scene));
+    } else {
+      plan.fits.push_back(fit_ortho(light.direction, body, in.casters));
+    }
+  }
+  return plan;
+}
+
+SliceChoice choose_slice(std::span<const float> splits, float blend, float distance) {
+  const size_t m = splits.size() - 1;
+  SliceChoice c;
+  while (c.slice + 1 < m && distance >= splits[c.slice + 1]) ++c.slice;
+  if (blend > 0.0f && c.slice + 1 < m) {
+    const float end = splits[c.slice + 1], band = blend * (end - splits[c.slice]);
+    if (distance > end - band) c.next_weight = std::min(1.0f, (distance - (end - band)) / band);
+  }
+  return c;
+}
+
+namespace {
+
+class CascadeShadow final : public LightShadow {
+ public:
+  CascadeShadow(Technique t, CascadePlan plan, const CascadeSettings& s, const LightDesc& light,
+                const ShadowConfig& c, const CameraView& camera)
+      : splits_(std::move(plan.splits)), blend_(s.blend), camera_(camera),
+        set_(t, plan.fits, labels(t, plan.fits.size()), light, c, s.atlas) {}
+
+  raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& c) override { return set_.build(renderer, c); }
+
+  void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const override {
+    const SliceLight& l = set_.light();
+    dispatch_filter(l.filter_kind, l.filter.pcf_taps, [&]<class F, bool kPcf>() {
+      for (size_t i = 0; i < q.size(); ++i) {
+        const SliceChoice c = choose_slice(splits_, blend_, view_distance(camera_, q[i].p));
+        float v = slice_visibility<F, kPcf>(set_.map(c.slice), l, q[i].p, q[i].n, q[i].frag);
+        if (c.next_weight > 0.0f)
+          v += c.next_weight * (slice_visibility<F, kPcf>(set_.map(c.slice + 1), l, q[i].p, q[i].n, q[i].frag) - v);
+        vis[i] = v;
+      }
+    });
+  }
+
+  std::vector<MapRecord> maps() const override { return set_.records(); }
+
+ private:
+  static std::vector<std::string> labels(Technique t, size_t n) {
+    std::vector<std::string> out;
+    for (size_t k = 0; k < n; ++k) out.push_back(t == Technique::lispsm ? "lispsm" : "cascade" + std::to_string(k));
+    return out;
+  }
+
+  std::vector<float> splits_;
+  float blend_;
+  CameraView camera_;
+  SliceSet set_;
+};
+
+}  // namespace
+
+std::unique_ptr<LightShadow> plan_cascades(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {
+  const Params p(c);
+  CascadeSettings s;
+  s.count = int(p.number("cascades"));
+  s.lambda = float(p.number("split_lambda"));
+  s.stabilize = p.flag("stabilize");
+  s.blend = float(p.number("cascade_blend"));
+  s.atlas = p.text("map_layout") == "atlas";
+  s.visible = p.text("view_range") == "visible";
+  s.lispsm = p.text("cascade_warp") == "lispsm";
+  if (s.visible && !in.visible) throw TechniqueError(p.where("view_range") + ": visible needs the camera's depth pre-pass");
+  if (s.stabilize && s.lispsm)
+    throw TechniqueError(p.where("stabilize") + ": a LiSPSM warp (cascade_warp = lispsm) changes with every view "
+                                                "and cannot be stabilised");
+  CascadePlan plan = plan_cascade_fits(light, s, c.map_size, in);
+  return std::make_unique<CascadeShadow>(Technique::cascades, std::move(plan), s, light, c, in.camera);
+}
+
+std::unique_ptr<LightShadow> plan_lispsm(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {
+  CascadeSettings s;
+  s.count = 1;
+  s.lispsm = true;
+  const Params p(c);
+  s.visible = p.text("view_range") == "visible";
+  if (s.visible && !in.visible) throw TechniqueError(p.where("view_range") + ": visible needs the camera's depth pre-pass");
+  CascadePlan plan = plan_cascade_fits(light, s, c.map_size, in);
+  return std::make_unique<CascadeShadow>(Technique::lispsm, std::move(plan), s, light, c, in.camera);
+}
+
+}  // namespace shading::tech

@@ -1,0 +1,137 @@
+// Whole frames of the view-following techniques (cascades, LiSPSM, frustum faces) on the built-in `duel` and
+// `tutorial` scenes: golden hashes, identical at 0, 1 and 2 threads; stabilised cascades whose maps do not
+// change when the camera moves by a fraction of a texel (and tight ones that do, so the check can fail); the
+// refusals a user meets.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+
+#include "scenes/builtin_scenes.h"
+#include "scenes/frame/frame.h"
+#include "tests/scenes/frame/golden.h"
+
+namespace {
+
+namespace tech = shading::tech;
+
+struct Case {
+  const char* name;
+  const char* scene;
+  tech::Technique technique;
+  const char* params;  // key=value;key=value
+  uint64_t expected;
+};
+
+void apply_params(frame::FrameConfig& o, const std::string& text) {
+  size_t at = 0;
+  while (at < text.size()) {
+    const size_t end = std::min(text.find(';', at), text.size());
+    const std::string kv = text.substr(at, end - at);
+    const size_t eq = kv.find('=');
+    const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
+    if (value == "true" || value == "false") o.params[key] = value == "true";
+    else if (std::isdigit(static_cast<unsigned char>(value[0]))) o.params[key] = std::stod(value);
+    else o.params[key] = value;
+    at = end + 1;
+  }
+}
+
+// Expected hashes at 320 × 180 with each technique's default map size and format.
+const Case kCases[] = {
+    {"duel_cascades", "duel", tech::Technique::cascades, "", 0xd3bd5cfe5d7fd92cull},
+    {"duel_cascades2_separate", "duel", tech::Technique::cascades, "cascades=2;map_layout=separate", 0x2bf58c09b5855cc4ull},
+    {"duel_cascades_stable_blend", "duel", tech::Technique::cascades, "stabilize=true;cascade_blend=0.2", 0xce754b6a86ade4e7ull},
+    {"duel_cascades_visible", "duel", tech::Technique::cascades, "view_range=visible", 0x2818598dd194232aull},
+    {"duel_cascades_lispsm", "duel", tech::Technique::cascades, "cascade_warp=lispsm", 0x0b53c80feeb95504ull},
+    {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0x348a913356282d2dull},
+    {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0x4cfc4eaae346b491ull},
+    {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0x57ac72c8d32cf440ull},
+    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x8d9ba5c3109cbdbeull},
+    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0x207dacb151b74e75ull},
+    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x9f7f3ea973173d57ull},
+    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0xb396bd9d5a5c397cull},
+};
+
+class ViewFollowingGolden : public testing::TestWithParam<Case> {};
+
+TEST_P(ViewFollowingGolden, HashIsStableAcrossThreadCounts) {
+  const Case& c = GetParam();
+  const scenes::Scene scene = scenes::builtin_scene(c.scene);
+  frame::FrameConfig o;
+  o.width = 320;
+  o.height = 180;
+  o.technique = c.technique;
+  apply_params(o, c.params);
+  testsupport::expect_golden_frame(c.name, c.expected, scene, o, [&](const frame::Frame& f) {
+    const auto maps = frame::export_maps(f);
+    ASSERT_FALSE(maps.empty());
+    for (const auto& m : maps) EXPECT_EQ(m.map.technique, tech::to_string(c.technique));
+  });
+}
+
+INSTANTIATE_TEST_SUITE_P(Techniques, ViewFollowingGolden, testing::ValuesIn(kCases),
+                         [](const testing::TestParamInfo<Case>& i) { return std::string(i.param.name); });
+
+// The depth texels of every map of a frame, concatenated.
+std::vector<float> map_texels(const frame::Frame& f) {
+  std::vector<float> out;
+  for (const auto& m : frame::export_maps(f)) out.insert(out.end(), m.map.z.begin(), m.map.z.end());
+  return out;
+}
+
+std::vector<float> duel_maps_with_camera_shift(glm::vec3 shift, bool stabilize) {
+  scenes::Scene scene = scenes::builtin_scene("duel");
+  scene.cameras.at(0).position += shift;
+  scene.cameras.at(0).target += shift;
+  frame::FrameConfig o;
+  o.width = 320;
+  o.height = 180;
+  o.technique = tech::Technique::cascades;
+  o.params["stabilize"] = stabilize;
+  raster::Renderer r(2);
+  return map_texels(frame::render_frame(scene, o, r));
+}
+
+TEST(StabilisedCascades, MapsStayBitIdenticalWhenTheCameraMovesByAFractionOfATexel) {
+  // The nearest cascade's texels are about a centimetre wide on `duel`; a millimetre is well under one.
+  const glm::vec3 shift(0.0011f, 0.0007f, -0.0013f);
+  const std::vector<float> a = duel_maps_with_camera_shift(glm::vec3(0.0f), true);
+  const std::vector<float> b = duel_maps_with_camera_shift(shift, true);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_TRUE(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
+  // The tight crops follow the camera: the same move changes their maps.
+  const std::vector<float> c = duel_maps_with_camera_shift(glm::vec3(0.0f), false);
+  const std::vector<float> d = duel_maps_with_camera_shift(shift, false);
+  ASSERT_EQ(c.size(), d.size());
+  EXPECT_FALSE(std::memcmp(c.data(), d.data(), c.size() * sizeof(float)) == 0);
+}
+
+std::string frame_error(const char* scene_name, const frame::FrameConfig& o) {
+  raster::Renderer r(0);
+  try {
+    frame::render_frame(scenes::builtin_scene(scene_name), o, r);
+  } catch (const frame::FrameError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ViewFollowing, RefusesWhatCannotWork) {
+  frame::FrameConfig o;
+  o.width = 64;
+  o.height = 36;
+  o.technique = tech::Technique::cascades;
+  o.params["stabilize"] = true;
+  o.params["cascade_warp"] = std::string("lispsm");
+  EXPECT_EQ(frame_error("duel", o).rfind("lights[0].shadow.params.stabilize: ", 0), 0u) << frame_error("duel", o);
+  o.params.clear();
+  o.params["cascades"] = 5.0;
+  EXPECT_NE(frame_error("duel", o).find("cascades"), std::string::npos);
+  o.params.clear();
+  o.technique = tech::Technique::lispsm;
+  const std::string spot = frame_error("tutorial-spot", o);
+  EXPECT_NE(spot.find("does not serve spot lights"), std::string::npos) << spot;
+}
+
+}  // namespace
