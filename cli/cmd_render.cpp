@@ -21,7 +21,7 @@ namespace {
 
 struct RenderArgs {
   std::string scene;
-  std::string technique, filter, bias, depth_format, size = "1280x720", maps, out = "frame.png";
+  std::string technique, filter, bias, depth_format, size = "1280x720", maps, out = "frame.png", aliasing;
   long long shadow_size = 0;
   CLI::Option* shadow_size_option = nullptr;  // given or not
   int threads = -1;
@@ -119,6 +119,10 @@ int run_render(const RenderArgs& a) {
   }
   if (lower_extension(a.out) != ".png") throw CliError("--out", "expected a .png file name");
   check_output_dir(a.out, "--out");
+  if (!a.aliasing.empty()) {
+    if (lower_extension(a.aliasing) != ".png") throw CliError("--aliasing", "expected a .png file name");
+    check_output_dir(a.aliasing, "--aliasing");
+  }
   if (!a.maps.empty()) {
     std::error_code ec;
     if (std::filesystem::exists(a.maps, ec) && !std::filesystem::is_directory(a.maps, ec))
@@ -145,6 +149,7 @@ int run_render(const RenderArgs& a) {
   config.normal_offset = a.normal_offset;
   config.params = a.params;
   config.export_maps = !a.maps.empty();  // projective maps become EXR records only when written
+  config.aliasing = !a.aliasing.empty();
 
   raster::Renderer renderer(a.threads);
   Progress progress;
@@ -184,6 +189,27 @@ int run_render(const RenderArgs& a) {
     for (const frame::NamedMap& m : frame::export_maps(*result))
       scenes::io::write_exr_map(std::filesystem::path(a.maps) / (m.name + ".exr"), m.map);
   }
+  std::vector<std::pair<std::filesystem::path, raster::ColorTarget>> heat_maps;
+  if (!a.aliasing.empty()) {
+    size_t measured = 0;
+    for (const frame::AliasingImage& img : result->aliasing) measured += img.measured > 0;
+    if (measured == 0)
+      throw CliError("--aliasing", "no light of this frame has a measured pixel (measured: shadowmap, cascades, "
+                                   "lispsm, frustum-faces, on pixels facing the light)");
+    const std::filesystem::path base(a.aliasing);
+    for (size_t i = 0; i < result->aliasing.size(); ++i) {
+      const frame::AliasingImage& img = result->aliasing[i];
+      if (img.measured == 0) continue;
+      std::printf("aliasing %s (%s): max %.3g, p95 %.3g, mean %.3g pixels per texel over %zu lit-facing pixels; "
+                  "storage factor %.3g\n",
+                  result->lights[i].name.c_str(), std::string(shading::tech::to_string(result->lights[i].technique)).c_str(),
+                  double(img.max), double(img.p95), double(img.mean), img.measured, double(img.storage_factor()));
+      std::filesystem::path file = base;
+      if (measured > 1) file.replace_filename(base.stem().string() + "-" + result->lights[i].name + ".png");
+      heat_maps.emplace_back(file, frame::aliasing_heat_map(img));
+    }
+  }
+  for (const auto& [file, heat] : heat_maps) scenes::io::write_png(file, heat);
   scenes::io::write_png(a.out, result->color);
   return 0;
 }
@@ -204,6 +230,8 @@ Command add_render_command(CLI::App& parent) {
   app->add_option("--frames", args->frames, "Render the frame N times (timing); the last one is written");
   app->add_flag("--stats", args->stats, "Print per-frame timings and triangle counts");
   app->add_option("--out", args->out, "Output PNG (default frame.png)");
+  app->add_option("--aliasing", args->aliasing,
+                  "Also measure each light's aliasing (pixels per shadow-map texel) and write its heat map here (.png)");
   app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
   app->add_flag_callback("--no-cull-front", [args] { args->cull_front = false; }, "Render front faces into the maps");
   app->add_option("--poisson-taps", args->poisson_taps, "Poisson filters: 4 or 16 taps");

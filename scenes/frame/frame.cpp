@@ -119,7 +119,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   for (size_t i = 0; i < scene.lights.size(); ++i) resolved.push_back(resolve_light(scene.lights[i], i, config));
   check_params_used(config, resolved);
 
-  Frame frame{raster::ColorTarget(config.width, config.height, raster::ColorFormat::rgba8), {}, {}, {}};
+  Frame frame{raster::ColorTarget(config.width, config.height, raster::ColorFormat::rgba8), {}, {}, {}, {}};
 
   // ---- Shadow maps, light by light, through the registry.
   const auto t_shadow = Clock::now();
@@ -209,6 +209,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
     }
   }
   frame.stats.camera_ms = ms_since(t_camera);
+  if (config.aliasing) frame.aliasing = measure_aliasing(scene, view_proj, records, depth, renderer);
   frame.stats.projective = frame.projective.stats;
   return frame;
 }

@@ -14,6 +14,7 @@
 
 #include "raster/renderer.h"
 #include "raster/target.h"
+#include "scenes/frame/aliasing.h"
 #include "scenes/frame/frame_projective.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/scene.h"
@@ -49,6 +50,7 @@ struct FrameConfig {
   // light's technique takes is an error.
   std::map<std::string, tech::ParamValue> params;
 
+  bool aliasing = false;        // measure each light's aliasing (Frame::aliasing, scenes/frame/aliasing.h)
   bool export_maps = true;      // keep what export_maps needs (projective: the per-caster maps)
   bool quad_fragments = false;  // camera pass on the quad path only (fragment()), for tests of the wide path
 };
@@ -72,6 +74,7 @@ struct Frame {
   std::vector<LightResult> lights;  // per scene light
   ProjectiveFrame projective;       // the per-caster projective maps
   FrameStats stats;
+  std::vector<AliasingImage> aliasing;  // per scene light, with FrameConfig::aliasing
 };
 
 // Throws FrameError naming the field for a bad configuration or light setting. `cache` (optional) keeps

@@ -124,6 +124,11 @@ class CascadeShadow final : public LightShadow {
 
   std::vector<MapRecord> maps() const override { return set_.records(); }
 
+  bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const override {
+    const SliceChoice c = choose_slice(splits_, 0.0f, view_distance(camera_, p));
+    return slice_texels(set_.map(c.slice), p, others, out);
+  }
+
  private:
   static std::vector<std::string> labels(Technique t, size_t n) {
     std::vector<std::string> out;

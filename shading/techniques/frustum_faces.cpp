@@ -197,6 +197,10 @@ class FaceShadow final : public LightShadow {
 
   std::vector<MapRecord> maps() const override { return set_.records(); }
 
+  bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const override {
+    return slice_texels(set_.map(face_owner(plan_, p)), p, others, out);
+  }
+
  private:
   static std::vector<FittedMap> fits(const FacePlan& p) {
     std::vector<FittedMap> out;

@@ -20,6 +20,7 @@ struct SliceMap {
   glm::mat4 shadow{1.0f};  // bias × proj × view of its pass (viewport-relative: the lookups view the pass region)
   bool perspective = false;
   float depth_extent = 1.0f;
+  glm::vec2 size{1.0f};    // texels of its pass (viewport)
   MapLookups maps;
 };
 
@@ -38,6 +39,7 @@ inline SliceMap make_slice_map(const ShadowMapSet& set, size_t pass, float depth
   m.shadow = shadow_matrix(p);
   m.perspective = p.perspective;
   m.depth_extent = depth_extent;
+  m.size = glm::vec2(float(p.viewport.width), float(p.viewport.height));
   m.maps = map_lookups(Texture2D::view(*set.targets.at(p.target), p.viewport), Wrap::clamp_to_border);
   return m;
 }
@@ -57,6 +59,24 @@ inline bool slice_context(const SliceMap& s, const SliceLight& l, glm::vec3 p, g
   if (!(c.w > 0.0f)) return false;
   const float w = 1.0f / c.w;
   ctx = SampleContext{glm::vec2(c.x * w, c.y * w), c.z * w, frag, p};
+  return true;
+}
+
+// The continuous texel coordinates of p in map s (for the aliasing measure); false behind a perspective map's
+// centre of projection.
+inline bool slice_texel(const SliceMap& s, glm::vec3 p, glm::vec2& texel) {
+  const glm::vec4 c = s.shadow * glm::vec4(p, 1.0f);
+  if (!s.perspective) return texel = glm::vec2(c.x, c.y) * s.size, true;
+  if (!(c.w > 0.0f)) return false;
+  texel = glm::vec2(c.x, c.y) / c.w * s.size;
+  return true;
+}
+
+// The texel coordinates of p and of `others` in map s.
+inline bool slice_texels(const SliceMap& s, glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) {
+  if (!slice_texel(s, p, out[0])) return false;
+  for (size_t i = 0; i < others.size(); ++i)
+    if (!slice_texel(s, others[i], out[i + 1])) return false;
   return true;
 }
 

@@ -128,6 +128,13 @@ class LightShadow {
   // The same for up to eight points (a quad pair's), bit-identical per point.
   virtual void visibility_x8(std::span<const ShadowQuery> q, std::span<float> vis) const { visibility(q, vis); }
   virtual std::vector<MapRecord> maps() const = 0;
+  // For the aliasing measure (scenes/frame/aliasing.h): the continuous texel coordinates, in the map that
+  // point p reads, of p (out[0]) and of each of `others` in that same map (out[1..]), so a quad's derivatives
+  // never mix two maps. False where p reads no map or the technique does not measure its aliasing.
+  virtual bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const {
+    (void)p, (void)others, (void)out;
+    return false;
+  }
 };
 
 // How the camera pass applies a technique: through LightShadow::visibility in the lighting sum, or as extra

@@ -196,3 +196,19 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
 }
 
 }  // namespace
+
+TEST(CliAliasing, RenderMeasuresAliasingAndWritesItsHeatMap) {
+  const fs::path dir = testsupport::temp_dir("cli_aliasing");
+  const Outcome r = shadowlab(dir, "render duel --technique cascades --size 96x54 --threads 2 --out f.png --aliasing heat.png");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("aliasing light0-sun \\(cascades\\): max [0-9.e+]+, p95 [0-9.e+]+, mean "
+                                              "[0-9.e+]+ pixels per texel over [0-9]+ lit-facing pixels; storage "
+                                              "factor [0-9.e+]+"));
+  EXPECT_TRUE(fs::exists(dir / "heat.png"));
+  EXPECT_TRUE(fs::exists(dir / "f.png"));
+  // Nothing to measure: refused, and neither file written.
+  testsupport::expect_bad_run(dir, "render duel --technique none --size 32x32 --out g.png --aliasing h.png",
+                              "--aliasing", "g.png");
+  EXPECT_FALSE(fs::exists(dir / "h.png"));
+  testsupport::expect_bad_run(dir, "render duel --size 32x32 --out g.png --aliasing h.jpg", "--aliasing", "g.png");
+}

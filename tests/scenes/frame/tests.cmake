@@ -1,6 +1,7 @@
 # Whole frames through the scenes/frame library: every built-in scene, per-light settings, the camera pass's two
 # fragment paths, projective frames, and the registry walk over every technique and light type.
 list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/builtin_render_test.cpp
+     ${CMAKE_CURRENT_LIST_DIR}/aliasing_test.cpp
      ${CMAKE_CURRENT_LIST_DIR}/frame_lights_test.cpp
      ${CMAKE_CURRENT_LIST_DIR}/camera_pair_test.cpp
      ${CMAKE_CURRENT_LIST_DIR}/projective_frame_test.cpp
