@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The aliasing table of issue 15 for one scene: every whole-scene directional technique at equal total map
 # memory (2048² texels), at 1920x1080, with `shadowlab render --aliasing`; prints a Markdown table (max, p95 and
-# mean pixels per texel over the lit-facing pixels, storage factor p95², maps and texels) and writes a contact
+# mean pixels per texel over the lit-facing pixels, storage factor p95², maps and texels; the map-pass times
+# come from bench/directional_bench.cpp, warm and repeated) and writes a contact
 # sheet of the frames and heat maps (frame above heat map, one column per technique) with oiiotool.
 #   bench/directional_report.sh SCENE OUT_DIR [SHADOWLAB]
 # SCENE is a built-in name or a scene file (bench/scenes/forest.json needs ../shared/assets).
@@ -32,20 +33,23 @@ configs=(
   "faces-exact|$faces x ${face_size}²|--technique frustum-faces --shadow-size $face_size"
   "faces-lispsm|$faces x ${face_size}²|--technique frustum-faces --shadow-size $face_size --face-warp lispsm"
 )
-echo "| technique | maps | max | p95 | mean | storage factor | map passes (one run) |"
-echo "|---|---|---:|---:|---:|---:|---:|"
+echo "| technique | maps | max | p95 | mean | storage factor |"
+echo "|---|---|---:|---:|---:|---:|"
 frames=() heats=()
 for c in "${configs[@]}"; do
   IFS='|' read -r name maps args <<<"$c"
   # shellcheck disable=SC2086
-  text=$("$shadowlab" render "$scene" $args --size "$size" --out "$out/$name.png" --aliasing "$out/$name-aliasing.png" --stats)
-  line=$(grep '^aliasing' <<<"$text")
-  ms=$(sed -n 's/.*shadow \([0-9.]*\) ms.*/\1/p' <<<"$text")
+  line=$("$shadowlab" render "$scene" $args --size "$size" --out "$out/$name.png" --aliasing "$out/$name-aliasing.png")
   read -r max p95 mean factor < <(sed -E 's/.*max ([^,]+), p95 ([^,]+), mean ([^ ]+) .*storage factor (.*)/\1 \2 \3 \4/' <<<"$line")
-  echo "| $name | $maps | $max | $p95 | $mean | $factor | $ms ms |"
+  echo "| $name | $maps | $max | $p95 | $mean | $factor |"
   frames+=("$out/$name.png") heats+=("$out/$name-aliasing.png")
 done
-n=${#configs[@]}
-oiiotool "${frames[@]}" "${heats[@]}" --mosaic "${n}x2" --resize "$((n * 320))x360" -o "$out/contact-sheet.png"
+# Three techniques per row: their frames, then their heat maps beneath.
+sheet=()
+for ((i = 0; i < ${#frames[@]}; i += 3)); do
+  sheet+=("${frames[@]:i:3}" "${heats[@]:i:3}")
+done
+rows=$(((${#frames[@]} + 2) / 3 * 2))
+oiiotool "${sheet[@]}" --mosaic "3x$rows" --resize "960x$((rows * 180))" -o "$out/contact-sheet.png"
 echo
-echo "contact sheet: $out/contact-sheet.png (frames above, aliasing heat maps below, in the table's order)"
+echo "contact sheet: $out/contact-sheet.png (three techniques per row in the table's order: frames, heat maps beneath)"

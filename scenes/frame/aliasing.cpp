@@ -17,7 +17,7 @@ float pixels_per_texel(glm::vec2 dx, glm::vec2 dy) {
   // Eigenvalues of JᵀJ = [[a, b], [b, c]]; the smaller is σ_min².
   const float mean = 0.5f * (a + c), root = std::sqrt(std::max(0.0f, 0.25f * (a - c) * (a - c) + b * b));
   const float s2 = std::max(mean - root, 0.0f);
-  return s2 > 1e-12f ? std::min(1.0f / std::sqrt(s2), 1e6f) : 1e6f;
+  return s2 > 1.0f / (kRatioCap * kRatioCap) ? std::min(1.0f / std::sqrt(s2), kRatioCap) : kRatioCap;
 }
 
 struct AliasingShader {

@@ -20,6 +20,9 @@ namespace frame {
 // One light's measure over the frame: `ratio` per pixel (row-major, row 0 at the bottom); kUnmeasured where
 // the pixel faces away from the light or the technique has no measure there, kEmpty where nothing is drawn.
 inline constexpr float kUnmeasured = -1.0f, kEmpty = -2.0f;
+// The largest ratio recorded: a surface that contains the light direction (lit only through its interpolated
+// normal) has texels of infinite length on screen; it reads as this cap, so means stay meaningful.
+inline constexpr float kRatioCap = 1000.0f;
 struct AliasingImage {
   int width = 0, height = 0;
   std::vector<float> ratio;

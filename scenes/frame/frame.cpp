@@ -67,8 +67,9 @@ tech::CameraView camera_view(const scenes::Camera& camera, float aspect) {
   return v;
 }
 
-// What the camera sees (tech::VisibleSamples): a depth-only pass of the receivers at the frame's size, each
-// covered pixel's centre taken back to world space.
+// What the camera sees (tech::VisibleSamples): a depth-only pass of the receivers at the frame's size, reduced
+// to the range of window depths of each 8×8 tile's covered pixels, taken to view distances (monotonic in window
+// depth, so the two ends suffice).
 tech::VisibleSamples visible_samples(const scenes::Scene& scene, const glm::mat4& view_proj,
                                      const tech::CameraView& cam, int width, int height, raster::Renderer& renderer) {
   const scenes::TriangleSoup receivers = scenes::flatten(scene, scenes::InstanceFilter::receivers);
@@ -78,24 +79,35 @@ tech::VisibleSamples visible_samples(const scenes::Scene& scene, const glm::mat4
   s.color_write = false;
   renderer.draw(raster::RenderTargets{&depth, nullptr}, s, tech::WorldDepthShader{view_proj},
                 std::span<const glm::vec3>(receivers.positions), std::span<const uint32_t>(receivers.indices));
-  const glm::mat4 inv = glm::inverse(view_proj);
+  const glm::mat4 inv_proj = glm::inverse(cam.proj);
+  auto distance = [&](float window_z) {
+    const glm::vec4 v = inv_proj * glm::vec4(0.0f, 0.0f, 2.0f * window_z - 1.0f, 1.0f);
+    return -v.z / v.w;
+  };
+  constexpr int kTile = 8;
   tech::VisibleSamples v;
   v.min_distance = std::numeric_limits<float>::infinity();
   v.max_distance = -v.min_distance;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const float z = depth.value(x, y);
-      if (!(z < 1.0f)) continue;
-      const glm::vec4 ndc(2.0f * (float(x) + 0.5f) / float(width) - 1.0f,
-                          2.0f * (float(y) + 0.5f) / float(height) - 1.0f, 2.0f * z - 1.0f, 1.0f);
-      const glm::vec4 w = inv * ndc;
-      const glm::vec3 p = glm::vec3(w) / w.w;
-      const float d = tech::view_distance(cam, p);
-      v.min_distance = std::min(v.min_distance, d);
-      v.max_distance = std::max(v.max_distance, d);
-      v.points.push_back(p);
+  for (int ty = 0; ty < height; ty += kTile)
+    for (int tx = 0; tx < width; tx += kTile) {
+      float lo = 1.0f, hi = 0.0f;
+      for (int y = ty; y < std::min(ty + kTile, height); ++y)
+        for (int x = tx; x < std::min(tx + kTile, width); ++x) {
+          const float z = depth.value(x, y);
+          if (z < 1.0f) lo = std::min(lo, z), hi = std::max(hi, z);
+        }
+      if (lo > hi) continue;
+      tech::VisibleTile t;
+      t.ndc_min = {2.0f * float(tx) / float(width) - 1.0f, 2.0f * float(ty) / float(height) - 1.0f};
+      t.ndc_max = {2.0f * float(std::min(tx + kTile, width)) / float(width) - 1.0f,
+                   2.0f * float(std::min(ty + kTile, height)) / float(height) - 1.0f};
+      t.near = distance(lo);
+      t.far = distance(hi);
+      v.min_distance = std::min(v.min_distance, t.near);
+      v.max_distance = std::max(v.max_distance, t.far);
+      v.tiles.push_back(t);
     }
-  if (v.points.empty()) v.min_distance = v.max_distance = 0.0f;
+  if (v.tiles.empty()) v.min_distance = v.max_distance = 0.0f;
   return v;
 }
 
