@@ -67,10 +67,7 @@ CascadePlan plan_cascade_fits(const LightDesc& light, const CascadeSettings& s, 
     if (!clipped.empty()) body = clipped;
     if (visible) {
       points.clear();
-      for (const glm::vec3& p : visible->points) {
-        const float d = view_distance(cam, p);
-        if (d >= a && d <= b) points.push_back(p);
-      }
+      visible_body(cam, *visible, a, b, points);
       if (!points.empty()) body = points;
     }
     if (s.lispsm) {

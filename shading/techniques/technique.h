@@ -75,10 +75,17 @@ struct CameraView {
   bool perspective = true;
 };
 
-// What the camera actually sees (sample-distribution fitting): the world positions of the covered pixels of a
-// depth-only pre-pass over the receivers, and their range of view distances. Empty when nothing is covered.
+// What the camera actually sees (sample-distribution fitting), from a depth-only pre-pass over the receivers:
+// per screen tile of covered pixels, its rectangle in normalised device x, y and the range of view distances
+// of its pixels; and their overall range. The pyramid of a tile's rectangle between its two distances holds
+// every visible point of the tile (visible_body in view_frustum.h turns it into points). Empty when nothing is
+// covered.
+struct VisibleTile {
+  glm::vec2 ndc_min{0.0f}, ndc_max{0.0f};
+  float near = 0.0f, far = 0.0f;  // view distances
+};
 struct VisibleSamples {
-  std::vector<glm::vec3> points;
+  std::vector<VisibleTile> tiles;
   float min_distance = 0.0f, max_distance = 0.0f;
 };
 

@@ -30,7 +30,7 @@ ViewRange receiver_view_range(const CameraView& c, const Box& receivers) {
 }
 
 ViewRange visible_view_range(const CameraView& c, const VisibleSamples& v) {
-  if (v.points.empty()) return {c.near, c.far};
+  if (v.tiles.empty()) return {c.near, c.far};
   const float pad = 0.01f * (v.max_distance - v.min_distance) + 1e-4f;
   ViewRange r{std::clamp(v.min_distance - pad, c.near, c.far), std::clamp(v.max_distance + pad, c.near, c.far)};
   if (!(r.far > r.near)) r.far = r.near * 1.0001f + 1e-4f;
@@ -66,6 +66,24 @@ std::array<glm::vec3, 8> slice_corners(const CameraView& c, float a, float b) {
     out[k + 4] = at(b);
   }
   return out;
+}
+
+void visible_body(const CameraView& c, const VisibleSamples& v, float a, float b, std::vector<glm::vec3>& out) {
+  const glm::mat4 inv_proj = glm::inverse(c.proj), inv_view = glm::inverse(c.view);
+  for (const VisibleTile& t : v.tiles) {
+    const float lo = std::max(a, t.near), hi = std::min(b, t.far);
+    if (lo > hi) continue;
+    for (int k = 0; k < 4; ++k) {
+      const glm::vec2 xy((k & 1) ? t.ndc_max.x : t.ndc_min.x, (k & 2) ? t.ndc_max.y : t.ndc_min.y);
+      // The ray through this corner, in view space, from the near to the far clip plane (as slice_corners).
+      const glm::vec4 pn = inv_proj * glm::vec4(xy, -1.0f, 1.0f), pf = inv_proj * glm::vec4(xy, 1.0f, 1.0f);
+      const glm::vec3 n3 = glm::vec3(pn) / pn.w, f3 = glm::vec3(pf) / pf.w;
+      for (const float d : {lo, hi}) {
+        const float s = (d + n3.z) / (n3.z - f3.z);
+        out.push_back(glm::vec3(inv_view * glm::vec4(n3 + (f3 - n3) * s, 1.0f)));
+      }
+    }
+  }
 }
 
 std::vector<glm::vec3> clip_slice_to_box(const std::array<glm::vec3, 8>& c, const Box& box) {

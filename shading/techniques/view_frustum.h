@@ -35,6 +35,11 @@ std::vector<float> practical_splits(float n, float f, int m, float lambda);
 // quadruple in the order (−x, −y), (+x, −y), (+x, +y), (−x, +y) of the camera's view space.
 std::array<glm::vec3, 8> slice_corners(const CameraView& c, float a, float b);
 
+// Points whose bounds (and any linear-fractional bound, e.g. a LiSPSM crop) hold every visible point at view
+// distances [a, b]: for each visible tile overlapping [a, b], the corners of its rectangle at the overlap's two
+// distances. Appended to `out`.
+void visible_body(const CameraView& c, const VisibleSamples& v, float a, float b, std::vector<glm::vec3>& out);
+
 // The vertices of the convex intersection of a frustum slice (slice_corners order) and a box: the corners of
 // each inside the other and the crossings of each one's edges with the other's faces. Any linear or
 // linear-fractional bound of the intersection (a crop in light space) is reached at one of them. Empty when the
