@@ -2,6 +2,7 @@
 #include "shading/techniques/cascades.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -116,6 +117,27 @@ class CascadeShadow final : public LightShadow {
           v += c.next_weight * (slice_visibility<F, kPcf>(set_.map(c.slice + 1), l, q[i].p, q[i].n, q[i].frag) - v);
         vis[i] = v;
       }
+    });
+  }
+
+  // Eight wide: the points of the pair grouped by slice; points in a blend band read their next slice too.
+  void visibility_x8(std::span<const ShadowQuery> q, std::span<float> vis) const override {
+    const SliceLight& l = set_.light();
+    std::array<SliceChoice, 8> c;
+    bool blends = false;
+    for (size_t i = 0; i < q.size(); ++i) {
+      c[i] = choose_slice(splits_, blend_, view_distance(camera_, q[i].p));
+      blends |= c[i].next_weight > 0.0f;
+    }
+    dispatch_filter(l.filter_kind, l.filter.pcf_taps, [&]<class F, bool kPcf>() {
+      slices_visibility_x8<F, kPcf>(set_.maps(), l, q, [&](size_t i) { return c[i].slice; }, vis);
+      if (!blends) return;
+      std::array<float, 8> next{};
+      slices_visibility_x8<F, kPcf>(set_.maps(), l, q,
+                                    [&](size_t i) { return std::min(c[i].slice + 1, splits_.size() - 2); },
+                                    std::span<float>(next.data(), q.size()));
+      for (size_t i = 0; i < q.size(); ++i)
+        if (c[i].next_weight > 0.0f) vis[i] += c[i].next_weight * (next[i] - vis[i]);
     });
   }
 

@@ -195,6 +195,13 @@ class FaceShadow final : public LightShadow {
     });
   }
 
+  void visibility_x8(std::span<const ShadowQuery> q, std::span<float> vis) const override {
+    const SliceLight& l = set_.light();
+    dispatch_filter(l.filter_kind, l.filter.pcf_taps, [&]<class F, bool kPcf>() {
+      slices_visibility_x8<F, kPcf>(set_.maps(), l, q, [&](size_t i) { return face_owner(plan_, q[i].p); }, vis);
+    });
+  }
+
   std::vector<MapRecord> maps() const override { return set_.records(); }
 
   bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const override {

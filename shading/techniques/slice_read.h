@@ -11,6 +11,7 @@
 
 #include "shading/techniques/classic.h"
 #include "shading/techniques/shadow_filters.h"
+#include "shading/techniques/shadow_filters_x8.h"
 #include "shading/techniques/shadow_map_set.h"
 
 namespace shading::tech {
@@ -86,6 +87,45 @@ float slice_visibility(const SliceMap& s, const SliceLight& l, glm::vec3 p, glm:
   SampleContext ctx;
   if (!slice_context(s, l, p, n, frag, ctx)) return 1.0f;
   return Filter{}(Taps<kPcfTaps>{&s.maps}, ctx, l.filter);
+}
+
+// The same for the points q[i], i in `which` (up to eight), all reading map s, eight lanes wide: each point's
+// context as above, then every tap of the filter one eight-lane lookup (shadow_filters_x8.h); bit-identical per
+// point to slice_visibility. Writes vis[i] for each i in `which`.
+template <class Filter, bool kPcfTaps>
+void slice_visibility_x8(const SliceMap& s, const SliceLight& l, std::span<const ShadowQuery> q,
+                         std::span<const size_t> which, std::span<float> vis) {
+  SampleLanes b;
+  std::array<size_t, 8> point_of;
+  for (const size_t i : which) {
+    if (!slice_context(s, l, q[i].p, q[i].n, q[i].frag, b.ctx[size_t(b.count)])) {
+      vis[i] = 1.0f;
+      continue;
+    }
+    point_of[size_t(b.count++)] = i;
+  }
+  if (b.count == 0) return;
+  b.finish();
+  alignas(32) float out[8];
+  filter_lanes<Filter, kPcfTaps>(s.maps, b, l.filter).store(out);
+  for (int k = 0; k < b.count; ++k) vis[point_of[size_t(k)]] = out[k];
+}
+
+// Eight-wide visibility of a batch whose points each read one map, map_of(i): the points are grouped by map
+// (a quad pair rarely spans two) and each group read by slice_visibility_x8.
+template <class Filter, bool kPcfTaps, class MapOf>
+void slices_visibility_x8(std::span<const SliceMap> maps, const SliceLight& l, std::span<const ShadowQuery> q,
+                          MapOf&& map_of, std::span<float> vis) {
+  std::array<size_t, 8> map{}, group{};
+  for (size_t i = 0; i < q.size(); ++i) map[i] = map_of(i);
+  std::array<bool, 8> done{};
+  for (size_t i = 0; i < q.size(); ++i) {
+    if (done[i]) continue;
+    size_t n = 0;
+    for (size_t j = i; j < q.size(); ++j)
+      if (!done[j] && map[j] == map[i]) group[n++] = j, done[j] = true;
+    slice_visibility_x8<Filter, kPcfTaps>(maps[map[i]], l, q, std::span<const size_t>(group.data(), n), vis);
+  }
 }
 
 }  // namespace shading::tech

@@ -3,6 +3,7 @@
 // separate targets; built with the classic depth-pass state (back faces, polygon offset); read per slice through
 // SliceMap (slice_read.h); exported as one record per target listing each of its passes.
 #pragma once
+#include <span>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ class SliceSet {
   const FittedMap& fit(size_t k) const { return fits_.at(k); }
   const ShadowMapSet& set() const { return set_; }
   const SliceMap& map(size_t k) const { return maps_.at(k); }  // after build
+  std::span<const SliceMap> maps() const { return maps_; }
   const SliceLight& light() const { return light_; }
   std::vector<MapRecord> records() const;
 

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <string>
 
 #include "scenes/frame/camera_shader.h"
@@ -48,7 +50,10 @@ size_t bytes_differing(const raster::ColorTarget& a, const raster::ColorTarget& 
   return n;
 }
 
-void expect_paths_agree(const char* scene_name, raster::DepthFormat format, int map_size) {
+void expect_paths_agree(const char* scene_name, raster::DepthFormat format, int map_size,
+                        std::optional<shading::tech::Technique> technique = std::nullopt,
+                        const std::map<std::string, shading::tech::ParamValue>& params = {},
+                        const char* bias = "slope") {
   scenes::Scene scene = scenes::builtin_scene(scene_name);
   for (auto& l : scene.lights) l.shadow.depth_format = format;
   raster::Renderer renderer(testsupport::test_threads());
@@ -56,7 +61,9 @@ void expect_paths_agree(const char* scene_name, raster::DepthFormat format, int 
     frame::FrameConfig o;
     o.width = 256, o.height = 144;  // odd quad pairs at the right edge are covered by triangle edges anyway
     o.filter = *shading::tech::parse_filter(r.filter);
-    o.bias = *shading::tech::parse_bias_mode("slope");
+    o.bias = *shading::tech::parse_bias_mode(bias);
+    o.technique = technique;
+    o.params = params;
     o.cull_front = true;
     o.poisson_taps = r.taps;
     o.params["pcf_taps"] = bool(r.pcf_taps);
@@ -81,4 +88,15 @@ TEST(CameraPair, TutorialWidePathEqualsQuadPath) {
 TEST(CameraPair, SpotWidePathEqualsQuadPath) {
   expect_paths_agree("tutorial-spot", raster::DepthFormat::d16, 512);
   expect_paths_agree("tutorial-spot", raster::DepthFormat::d32f, 1024);
+}
+
+// The view-following techniques read one map per point, chosen per point: a quad pair that spans two slices
+// or two faces, and the blend band between cascades, read the same bits on both paths.
+TEST(CameraPair, ViewFollowingWidePathEqualsQuadPath) {
+  using shading::tech::Technique;
+  expect_paths_agree("duel", raster::DepthFormat::d16, 512, Technique::cascades, {{"cascade_blend", 0.3}});
+  expect_paths_agree("duel", raster::DepthFormat::d24, 1024, Technique::lispsm, {}, "constant");
+  expect_paths_agree("tutorial", raster::DepthFormat::d24, 512, Technique::frustum_faces, {}, "normal");
+  expect_paths_agree("tutorial", raster::DepthFormat::d16, 512, Technique::cascades,
+                     {{"cascades", 3.0}, {"cascade_warp", std::string("lispsm")}}, "offset");
 }
