@@ -135,3 +135,37 @@ TEST(ViewFollowing, RefusesWhatCannotWork) {
 }
 
 }  // namespace
+
+namespace {
+
+// Exported maps carry every pass: an atlas is one map listing its slices' viewports, labels and matrices;
+// separate maps are one file each, still labelled.
+TEST(ViewFollowing, ExportedMapsCarryEveryPass) {
+  const scenes::Scene scene = scenes::builtin_scene("duel");
+  raster::Renderer r(2);
+  frame::FrameConfig o;
+  o.width = 64;
+  o.height = 36;
+  o.map_size = 256;
+  o.technique = tech::Technique::cascades;
+  const auto atlas = frame::export_maps(frame::render_frame(scene, o, r));
+  ASSERT_EQ(atlas.size(), 1u);
+  EXPECT_EQ(atlas[0].map.width, 512);
+  EXPECT_EQ(atlas[0].map.height, 512);
+  ASSERT_EQ(atlas[0].map.passes.size(), 4u);
+  for (size_t k = 0; k < 4; ++k) {
+    const auto& p = atlas[0].map.passes[k];
+    EXPECT_EQ(p.label, "cascade" + std::to_string(k));
+    EXPECT_EQ(p.viewport.x, int(k % 2) * 256);
+    EXPECT_EQ(p.viewport.y, int(k / 2) * 256);
+    if (k > 0) EXPECT_NE(p.world_to_ndc, atlas[0].map.passes[k - 1].world_to_ndc);
+  }
+  o.params["map_layout"] = std::string("separate");
+  const auto separate = frame::export_maps(frame::render_frame(scene, o, r));
+  ASSERT_EQ(separate.size(), 4u);
+  EXPECT_EQ(separate[3].name, "light0-sun-3");
+  EXPECT_EQ(separate[3].map.passes.at(0).label, "cascade3");
+  EXPECT_EQ(separate[3].map.world_to_ndc, atlas[0].map.passes[3].world_to_ndc);
+}
+
+}  // namespace
