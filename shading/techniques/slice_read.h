@@ -4,6 +4,8 @@
 // the projection (divided by q where the map is perspective) and the light's filter. Outside its map a point
 // reads as lit (border depth 1), as the classic directional map.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <span>
 
 #include <glm/geometric.hpp>
@@ -22,6 +24,7 @@ struct SliceMap {
   bool perspective = false;
   float depth_extent = 1.0f;
   glm::vec2 size{1.0f};    // texels of its pass (viewport)
+  float depth_quantum = 0.0f;  // one step of its depth format in window depth (d32f: 2^-23)
   MapLookups maps;
 };
 
@@ -41,17 +44,46 @@ inline SliceMap make_slice_map(const ShadowMapSet& set, size_t pass, float depth
   m.perspective = p.perspective;
   m.depth_extent = depth_extent;
   m.size = glm::vec2(float(p.viewport.width), float(p.viewport.height));
+  const uint32_t max_code = raster::depth_max_code(set.targets.at(p.target)->format());
+  m.depth_quantum = max_code ? 1.0f / float(max_code) : 1.0f / float(1u << 23);
   m.maps = map_lookups(Texture2D::view(*set.targets.at(p.target), p.viewport), Wrap::clamp_to_border);
   return m;
 }
 
+// The slope bias on a perspective map, in its window depth: the receiver's own depth gradient in the map (the
+// plane through p with normal n, taken through the map's projection at two points one hundredth of the map's
+// depth extent away along the plane), over slope / 0.005 texels along each axis, clamped to slope_max, and at
+// least two steps of the map's depth format (where texels are tiny, quantisation is all that is left). A warp
+// tilts in the map a surface that faces the light in the world, so the classic tan(acos(N·L)) term, zero
+// there, would leave it to acne (the receiver-plane depth bias of Isidoro, 2006).
+inline float receiver_plane_bias(const SliceMap& s, const BiasParams& b, glm::vec3 p, glm::vec3 n,
+                                 glm::vec3 mapped) {
+  const glm::vec3 t1 = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+  const glm::vec3 t2 = glm::cross(n, t1);
+  const float e = 0.01f * s.depth_extent;
+  auto map = [&](glm::vec3 q) {
+    const glm::vec4 c = s.shadow * glm::vec4(q, 1.0f);
+    return glm::vec3(c.x / c.w * s.size.x, c.y / c.w * s.size.y, c.z / c.w);
+  };
+  const glm::vec3 d1 = map(p + t1 * e) - mapped, d2 = map(p + t2 * e) - mapped;
+  // Solve [d1.xy; d2.xy] · g = [d1.z; d2.z] for the depth gradient g per texel.
+  const float det = d1.x * d2.y - d1.y * d2.x;
+  if (!(std::abs(det) > 1e-12f)) return b.slope_max;
+  const glm::vec2 g((d1.z * d2.y - d2.z * d1.y) / det, (d1.x * d2.z - d2.x * d1.z) / det);
+  const float v = (b.slope / 0.005f) * (std::abs(g.x) + std::abs(g.y));
+  return std::isfinite(v) ? std::clamp(v, 2.0f * s.depth_quantum, std::max(b.slope_max, 2.0f * s.depth_quantum))
+                          : b.slope_max;
+}
+
 // Where point p with unit normal n reads map s: false (lit, no lookup) when p lies behind a perspective map's
-// projection centre.
+// projection centre. Constant (and, on orthographic maps, slope) bias moves p towards the light by the bias
+// times the map's depth extent; slope on a perspective map is receiver_plane_bias.
 inline bool slice_context(const SliceMap& s, const SliceLight& l, glm::vec3 p, glm::vec3 n, glm::vec2 frag,
                           SampleContext& ctx) {
   glm::vec3 q = p;
   if (l.bias.mode == BiasMode::normal) q += n * l.bias.normal_offset;
-  q -= l.direction * (depth_bias(l.bias, glm::dot(n, -l.direction)) * s.depth_extent);
+  const bool plane_bias = s.perspective && l.bias.mode == BiasMode::slope;
+  if (!plane_bias) q -= l.direction * (depth_bias(l.bias, glm::dot(n, -l.direction)) * s.depth_extent);
   const glm::vec4 c = s.shadow * glm::vec4(q, 1.0f);
   if (!s.perspective) {
     ctx = SampleContext{glm::vec2(c.x, c.y), c.z, frag, p};
@@ -60,6 +92,7 @@ inline bool slice_context(const SliceMap& s, const SliceLight& l, glm::vec3 p, g
   if (!(c.w > 0.0f)) return false;
   const float w = 1.0f / c.w;
   ctx = SampleContext{glm::vec2(c.x * w, c.y * w), c.z * w, frag, p};
+  if (plane_bias) ctx.ref -= receiver_plane_bias(s, l.bias, p, n, glm::vec3(ctx.st * s.size, ctx.ref));
   return true;
 }
 

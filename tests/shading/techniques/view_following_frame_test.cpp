@@ -43,14 +43,14 @@ const Case kCases[] = {
     {"duel_cascades2_separate", "duel", tech::Technique::cascades, "cascades=2;map_layout=separate", 0x2bf58c09b5855cc4ull},
     {"duel_cascades_stable_blend", "duel", tech::Technique::cascades, "stabilize=true;cascade_blend=0.2", 0xce754b6a86ade4e7ull},
     {"duel_cascades_visible", "duel", tech::Technique::cascades, "view_range=visible", 0x68e68c54664dc238ull},
-    {"duel_cascades_lispsm", "duel", tech::Technique::cascades, "cascade_warp=lispsm", 0x0b53c80feeb95504ull},
-    {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0x348a913356282d2dull},
-    {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0x4cfc4eaae346b491ull},
+    {"duel_cascades_lispsm", "duel", tech::Technique::cascades, "cascade_warp=lispsm", 0x58c216ea08fbf745ull},
+    {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0xd33eeda250c0beecull},
+    {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0x73ad9cfe95af7fd1ull},
     {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0x57ac72c8d32cf440ull},
-    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x8d9ba5c3109cbdbeull},
-    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0xa046169b49c1cb22ull},
-    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x9f7f3ea973173d57ull},
-    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0xb396bd9d5a5c397cull},
+    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x07ae8d01e390539bull},
+    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0xb8e370af779889dcull},
+    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0xc47ef49bbfe3f7b5ull},
+    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0x354b6be4d447abf6ull},
 };
 
 class ViewFollowingGolden : public testing::TestWithParam<Case> {};
