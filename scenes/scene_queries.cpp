@@ -11,10 +11,22 @@ glm::vec3 transform_point(const glm::mat4& m, const glm::vec3& p) {
 void append(TriangleSoup& soup, const Scene& scene, const Instance& inst) {
   const Mesh& mesh = scene.meshes[inst.mesh];
   const uint32_t base = uint32_t(soup.positions.size());
-  soup.positions.reserve(soup.positions.size() + mesh.positions.size());
   for (const glm::vec3& p : mesh.positions) soup.positions.push_back(transform_point(inst.transform, p));
-  soup.indices.reserve(soup.indices.size() + mesh.indices.size());
   for (uint32_t i : mesh.indices) soup.indices.push_back(base + i);
+}
+
+// Reserves the soup's whole size once: reserving each instance's share as it is appended would defeat the
+// vectors' geometric growth and copy the soup once per instance (quadratic in the instance count).
+template <class Pass>
+void reserve_for(TriangleSoup& soup, const Scene& scene, size_t count, Pass&& pass) {
+  size_t positions = 0, indices = 0;
+  for (size_t k = 0; k < count; ++k)
+    if (const Instance* inst = pass(k)) {
+      positions += scene.meshes[inst->mesh].positions.size();
+      indices += scene.meshes[inst->mesh].indices.size();
+    }
+  soup.positions.reserve(positions);
+  soup.indices.reserve(indices);
 }
 
 }  // namespace
@@ -72,6 +84,9 @@ size_t triangle_count(const Scene& scene, InstanceFilter filter) {
 
 TriangleSoup flatten(const Scene& scene, InstanceFilter filter) {
   TriangleSoup soup;
+  reserve_for(soup, scene, scene.instances.size(), [&](size_t k) {
+    return passes(scene.instances[k], filter) ? &scene.instances[k] : nullptr;
+  });
   for (const Instance& inst : scene.instances)
     if (passes(inst, filter)) append(soup, scene, inst);
   return soup;
@@ -79,6 +94,7 @@ TriangleSoup flatten(const Scene& scene, InstanceFilter filter) {
 
 TriangleSoup flatten_instances(const Scene& scene, std::span<const uint32_t> instances) {
   TriangleSoup soup;
+  reserve_for(soup, scene, instances.size(), [&](size_t k) { return &scene.instances[instances[k]]; });
   for (uint32_t i : instances) append(soup, scene, scene.instances[i]);
   return soup;
 }
