@@ -104,7 +104,7 @@ class Importer {
       for (size_t i = 0; i < child.size(); ++i)
         if (!child[i]) roots.push_back(int(i));
     }
-    for (int r : roots) visit(r, glm::dmat4(1.0), 0);
+    walk(roots);
     if (out_.instances.empty()) fail("", "empty mesh: the file's scene has no triangles");
   }
 
@@ -113,23 +113,53 @@ class Importer {
     throw SceneError(file_, key, message);
   }
 
-  void visit(int index, const glm::dmat4& parent, size_t depth) {
-    if (index < 0 || size_t(index) >= model_.nodes.size())
-      fail("nodes", "node " + std::to_string(index) + " does not exist");
-    const std::string key = indexed("nodes", size_t(index));
-    if (depth > model_.nodes.size()) fail(key, "the node hierarchy has a cycle");
-    const tinygltf::Node& node = model_.nodes[size_t(index)];
-    const glm::dmat4 world = parent * node_matrix(node);
-    const glm::mat4 worldf(world);
-    if (node.mesh >= 0) add_mesh_instances(node, worldf, key);
-    if (node.camera >= 0) add_camera(node, worldf, key);
-    const auto ext = node.extensions.find("KHR_lights_punctual");
-    if (ext != node.extensions.end() && ext->second.Has("light")) {
-      const tinygltf::Value& v = ext->second.Get("light");
-      if (!v.IsInt()) fail(key + ".extensions.KHR_lights_punctual.light", "expected a light index");
-      add_light(v.GetNumberAsInt(), worldf, key);
+  // The node hierarchy, depth first from the roots in file order, with an explicit stack so that a chain of any
+  // depth cannot overflow the call stack. glTF requires a forest: a child index that exists, at most one
+  // parent per node, and no node reached twice (a cycle, or a root that is also a child), which also bounds
+  // the work by the node count (a node listing the same child twice would otherwise double it per level).
+  void walk(const std::vector<int>& roots) {
+    const size_t n = model_.nodes.size();
+    std::vector<int> parent(n, -1);
+    for (size_t i = 0; i < n; ++i)
+      for (int c : model_.nodes[i].children) {
+        const std::string key = indexed("nodes", i) + ".children";
+        if (c < 0 || size_t(c) >= n) fail(key, "node " + std::to_string(c) + " does not exist");
+        if (parent[size_t(c)] >= 0)
+          fail(key, "node " + std::to_string(c) + " is already a child of node " + std::to_string(parent[size_t(c)]) +
+                        ": a glTF node has at most one parent");
+        parent[size_t(c)] = int(i);
+      }
+    struct Item {
+      int index;
+      glm::dmat4 parent;
+      std::string from;  // where the index was listed, for messages
+    };
+    std::vector<bool> seen(n, false);
+    std::vector<Item> stack;
+    for (auto r = roots.rbegin(); r != roots.rend(); ++r) stack.push_back({*r, glm::dmat4(1.0), "nodes"});
+    while (!stack.empty()) {
+      const Item item = std::move(stack.back());
+      stack.pop_back();
+      if (item.index < 0 || size_t(item.index) >= n)
+        fail(item.from, "node " + std::to_string(item.index) + " does not exist");
+      if (seen[size_t(item.index)])
+        fail(item.from, "node " + std::to_string(item.index) + " is reached twice: the node hierarchy has a cycle");
+      seen[size_t(item.index)] = true;
+      const std::string key = indexed("nodes", size_t(item.index));
+      const tinygltf::Node& node = model_.nodes[size_t(item.index)];
+      const glm::dmat4 world = item.parent * node_matrix(node);
+      const glm::mat4 worldf(world);
+      if (node.mesh >= 0) add_mesh_instances(node, worldf, key);
+      if (node.camera >= 0) add_camera(node, worldf, key);
+      const auto ext = node.extensions.find("KHR_lights_punctual");
+      if (ext != node.extensions.end() && ext->second.Has("light")) {
+        const tinygltf::Value& v = ext->second.Get("light");
+        if (!v.IsInt()) fail(key + ".extensions.KHR_lights_punctual.light", "expected a light index");
+        add_light(v.GetNumberAsInt(), worldf, key);
+      }
+      for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
+        stack.push_back({*c, world, key + ".children"});
     }
-    for (int c : node.children) visit(c, world, depth + 1);
   }
 
   void add_mesh_instances(const tinygltf::Node& node, const glm::mat4& world, const std::string& key) {

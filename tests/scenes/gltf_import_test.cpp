@@ -207,3 +207,21 @@ TEST(GltfImport, GlbAndGltfGiveTheSameScene) {
 }
 
 }  // namespace
+
+// Issue 23: a chain of 10,000 nested nodes (each translated by 1 mm) overflowed the call stack; it now imports,
+// with the transforms composed down the whole chain.
+TEST(GltfImport, ADeepChainOfNodesImports) {
+  const auto dir = testsupport::temp_dir("gltf_deep_chain");
+  testsupport::GltfFixture f;
+  const int m = f.mesh(f.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+  constexpr int kDepth = 10000;
+  for (int i = 0; i < kDepth; ++i) {
+    nlohmann::json node = {{"translation", {0.001, 0, 0}}};
+    if (i + 1 < kDepth) node["children"] = {i + 1};
+    else node["mesh"] = m;
+    f.node(node, i == 0);
+  }
+  const scenes::Scene s = scenes::load_scene(f.write_gltf(dir, "chain"));
+  ASSERT_EQ(s.instances.size(), 1u);
+  EXPECT_NEAR(s.instances[0].transform[3].x, 10.0f, 1e-3f);
+}

@@ -170,7 +170,26 @@ TEST(SceneErrors, BrokenGltf) {
     const int b = f.node({{"children", {a}}}, false);
     f.doc["nodes"][a]["children"] = {b};
     EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "cycle")); }),
-              d + "/cycle.gltf: nodes[1]: the node hierarchy has a cycle");
+              d + "/cycle.gltf: nodes[1].children: node 0 is reached twice: the node hierarchy has a cycle");
+  }
+  {
+    // Issue 23: node i lists node i + 1 twice (a DAG): 2^n paths before; now refused at once.
+    testsupport::GltfFixture f;
+    const int m = f.mesh(f.positions(kTriangle));
+    f.node({{"children", {1, 1}}});
+    for (int i = 1; i < 40; ++i) f.node({{"mesh", m}, {"children", {i + 1, i + 1}}}, false);
+    f.node({{"mesh", m}}, false);
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "dag")); }),
+              d + "/dag.gltf: nodes[0].children: node 1 is already a child of node 0: a glTF node has at most one "
+                  "parent");
+  }
+  {
+    // A node that is both a root and another node's child is reached twice.
+    testsupport::GltfFixture f;
+    const int a = f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
+    f.node({{"children", {a}}});
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "root_child")); }),
+              d + "/root_child.gltf: nodes[1].children: node 0 is reached twice: the node hierarchy has a cycle");
   }
   {
     testsupport::GltfFixture f;  // compressed geometry
