@@ -22,7 +22,12 @@ T parse_name(const JsonIn& j, std::optional<T> (*parse)(std::string_view), std::
   j.fail("unknown " + std::string(what) + " '" + s + "' (known: " + join_names(table) + ")");
 }
 
-ObjectDesc read_object(const JsonIn& j, const std::set<std::string>& materials) {
+// Deeper nesting is refused: each level costs a frame here and in the builder, and its key path.
+constexpr int kMaxObjectDepth = 256;
+
+ObjectDesc read_object(const JsonIn& j, const std::set<std::string>& materials, const JsonIn& top, int depth = 0) {
+  if (depth > kMaxObjectDepth)
+    top.fail("children nest deeper than " + std::to_string(kMaxObjectDepth) + " levels");
   j.allow_only({"name", "primitive", "gltf", "mesh", "transform", "material", "casts_shadows", "receives_shadows",
                 "children"});
   ObjectDesc o;
@@ -52,7 +57,7 @@ ObjectDesc read_object(const JsonIn& j, const std::set<std::string>& materials) 
   if (auto c = j.optional("casts_shadows")) o.casts_shadows = c->boolean();
   if (auto r = j.optional("receives_shadows")) o.receives_shadows = r->boolean();
   if (auto c = j.optional("children"))
-    for (const JsonIn& child : c->items()) o.children.push_back(read_object(child, materials));
+    for (const JsonIn& child : c->items()) o.children.push_back(read_object(child, materials, top, depth + 1));
   return o;
 }
 
@@ -214,7 +219,7 @@ SceneDesc parse_scene_json(std::string_view text, const std::string& file) {
       if (!names.insert(d.materials.back().name).second) e.at("name").fail("duplicate material name");
     }
   if (auto o = root.optional("objects"))
-    for (const JsonIn& e : o->items()) d.objects.push_back(read_object(e, names));
+    for (const JsonIn& e : o->items()) d.objects.push_back(read_object(e, names, e));
   if (auto c = root.optional("cameras"))
     for (const JsonIn& e : c->items()) d.cameras.push_back(read_camera(e));
   if (auto l = root.optional("lights"))

@@ -226,6 +226,20 @@ TEST(SceneErrors, BrokenGltf) {
                 "invalid literal; last read: 'h'");
 }
 
+// Issue 23: objects nested 20,000 deep overflowed the stack (and 10,000 took 1.8 GB); deeper than 256 levels
+// is refused at once, naming the top-level object; 256 levels load.
+TEST(SceneErrors, DeeplyNestedObjects) {
+  auto nested = [](int depth) {
+    std::string s = R"({"objects": [)";
+    for (int i = 0; i < depth; ++i) s += R"({"children": [)";
+    s += R"({"primitive": {"type": "box"}})";
+    for (int i = 0; i < depth; ++i) s += "]}";
+    return s + "]}";
+  };
+  EXPECT_EQ(json_error(nested(20000)), "scene.json: objects[0]: children nest deeper than 256 levels");
+  EXPECT_EQ(json_error(nested(256)), "");
+}
+
 TEST(SceneErrors, ErrorsCarryTheirParts) {
   try {
     scenes::parse_scene_json(R"({"objects": [{"transform": {"scale": "big"}}]})", "parts.json");
