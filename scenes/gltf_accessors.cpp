@@ -102,16 +102,8 @@ const unsigned char* AccessorReader::span_of(int buffer_view, size_t offset, siz
   return data.data() + view.byteOffset + offset;
 }
 
-size_t AccessorReader::count(int index, const std::string& key) const {
-  if (index < 0 || size_t(index) >= model_.accessors.size())
-    fail(key, "accessor " + std::to_string(index) + " does not exist");
-  const size_t n = model_.accessors[size_t(index)].count;
-  if (n > kMaxElements) fail(key, "count " + std::to_string(n) + " is too large");
-  return n;
-}
-
-template <typename T>
-void AccessorReader::read(int index, const std::string& key, int type, Want want, T* out) const {
+template <typename T, typename Alloc>
+void AccessorReader::read(int index, const std::string& key, int type, Want want, Alloc&& alloc) const {
   if (index < 0 || size_t(index) >= model_.accessors.size())
     fail(key, "accessor " + std::to_string(index) + " does not exist");
   const tinygltf::Accessor& a = model_.accessors[size_t(index)];
@@ -130,6 +122,8 @@ void AccessorReader::read(int index, const std::string& key, int type, Want want
   if (a.count > kMaxElements) fail(where, "count " + std::to_string(a.count) + " is too large");
   const size_t element = n * csize;
 
+  // Every span is checked before anything is allocated: a count the buffers cannot hold fails here, not after
+  // allocating for it.
   const unsigned char* p = nullptr;
   size_t stride = element;
   if (a.bufferView >= 0) {
@@ -138,6 +132,21 @@ void AccessorReader::read(int index, const std::string& key, int type, Want want
     if (stride < element) fail(where, "byteStride " + std::to_string(stride) + " is smaller than an element");
     p = span_of(a.bufferView, a.byteOffset, stride, a.count, element, where);
   }
+  const size_t sparse = a.sparse.isSparse && a.sparse.count > 0 ? size_t(a.sparse.count) : 0;
+  const int it = a.sparse.indices.componentType;
+  const size_t isize = component_size(it);
+  const unsigned char *ip = nullptr, *vp = nullptr;
+  if (sparse) {
+    if (sparse > a.count) fail(where + ".sparse", "more sparse values than elements");
+    if (isize == 0 || it == TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where + ".sparse.indices", "invalid componentType");
+    ip = span_of(a.sparse.indices.bufferView, size_t(a.sparse.indices.byteOffset), isize, sparse, isize,
+                 where + ".sparse.indices");
+    vp = span_of(a.sparse.values.bufferView, size_t(a.sparse.values.byteOffset), element, sparse, element,
+                 where + ".sparse.values");
+  }
+
+  T* out = alloc(a.count);
+  if (a.count == 0) return;
   auto convert = [&](const unsigned char* q) {
     if constexpr (std::is_same_v<T, uint32_t>) return as_uint(q, ct);
     else return as_float(q, ct, a.normalized);
@@ -148,21 +157,10 @@ void AccessorReader::read(int index, const std::string& key, int type, Want want
   } else {
     std::fill(out, out + a.count * n, T(0));
   }
-  if (a.sparse.isSparse && a.sparse.count > 0) {
-    const size_t count = size_t(a.sparse.count);
-    if (count > a.count) fail(where + ".sparse", "more sparse values than elements");
-    const int it = a.sparse.indices.componentType;
-    const size_t isize = component_size(it);
-    if (isize == 0 || it == TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where + ".sparse.indices", "invalid componentType");
-    const unsigned char* ip = span_of(a.sparse.indices.bufferView, size_t(a.sparse.indices.byteOffset), isize,
-                                      count, isize, where + ".sparse.indices");
-    const unsigned char* vp = span_of(a.sparse.values.bufferView, size_t(a.sparse.values.byteOffset), element,
-                                      count, element, where + ".sparse.values");
-    for (size_t s = 0; s < count; ++s) {
-      const uint32_t target = as_uint(ip + s * isize, it);
-      if (target >= a.count) fail(where + ".sparse.indices", "index " + std::to_string(target) + " out of range");
-      for (size_t c = 0; c < n; ++c) out[target * n + c] = convert(vp + s * element + c * csize);
-    }
+  for (size_t s = 0; s < sparse; ++s) {
+    const uint32_t target = as_uint(ip + s * isize, it);
+    if (target >= a.count) fail(where + ".sparse.indices", "index " + std::to_string(target) + " out of range");
+    for (size_t c = 0; c < n; ++c) out[target * n + c] = convert(vp + s * element + c * csize);
   }
 }
 
@@ -170,20 +168,29 @@ void AccessorReader::read(int index, const std::string& key, int type, Want want
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
 
 std::vector<glm::vec3> AccessorReader::vec3(int accessor, const std::string& key) const {
-  std::vector<glm::vec3> out(count(accessor, key));
-  read<float>(accessor, key, TINYGLTF_TYPE_VEC3, Want::floats, &out.data()->x);
+  std::vector<glm::vec3> out;
+  read<float>(accessor, key, TINYGLTF_TYPE_VEC3, Want::floats, [&](size_t n) {
+    out.resize(n);
+    return n ? &out.data()->x : nullptr;
+  });
   return out;
 }
 
 std::vector<glm::vec2> AccessorReader::vec2(int accessor, const std::string& key) const {
-  std::vector<glm::vec2> out(count(accessor, key));
-  read<float>(accessor, key, TINYGLTF_TYPE_VEC2, Want::floats_or_normalized, &out.data()->x);
+  std::vector<glm::vec2> out;
+  read<float>(accessor, key, TINYGLTF_TYPE_VEC2, Want::floats_or_normalized, [&](size_t n) {
+    out.resize(n);
+    return n ? &out.data()->x : nullptr;
+  });
   return out;
 }
 
 std::vector<uint32_t> AccessorReader::indices(int accessor, const std::string& key) const {
-  std::vector<uint32_t> out(count(accessor, key));
-  read<uint32_t>(accessor, key, TINYGLTF_TYPE_SCALAR, Want::unsigned_ints, out.data());
+  std::vector<uint32_t> out;
+  read<uint32_t>(accessor, key, TINYGLTF_TYPE_SCALAR, Want::unsigned_ints, [&](size_t n) {
+    out.resize(n);
+    return out.data();
+  });
   return out;
 }
 

@@ -24,12 +24,11 @@ class AccessorReader {
 
  private:
   enum class Want { floats, floats_or_normalized, unsigned_ints };
-  // Element count of an accessor, checked to exist and to be of a sane size.
-  size_t count(int accessor, const std::string& key) const;
-  // Flat components of an accessor of `type` (sparse values applied) into `out` (count × components), after
-  // every bound is checked.
-  template <typename T>
-  void read(int accessor, const std::string& key, int type, Want want, T* out) const;
+  // Flat components of an accessor of `type` (sparse values applied) into alloc(count), which returns room
+  // for count × components values; called only after every bound is checked, so nothing is allocated for a
+  // count the buffers cannot hold.
+  template <typename T, typename Alloc>
+  void read(int accessor, const std::string& key, int type, Want want, Alloc&& alloc) const;
   const unsigned char* span_of(int buffer_view, size_t offset, size_t stride, size_t count, size_t element,
                                const std::string& key) const;
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;

@@ -173,6 +173,19 @@ TEST(SceneErrors, BrokenGltf) {
               d + "/cycle.gltf: nodes[1].children: node 0 is reached twice: the node hierarchy has a cycle");
   }
   {
+    // Issue 23: a count the buffer cannot hold is refused before anything is allocated for it (2^27 VEC3 would
+    // have been 1.5 GB), and a count of 0 is an empty mesh, not a read through a null pointer.
+    testsupport::GltfFixture f;
+    f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
+    f.doc["accessors"][0]["count"] = 1 << 27;
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "huge_count")); }),
+              d + "/huge_count.gltf: meshes[0].primitives[0].attributes.POSITION (accessors[0]): 134217728 elements "
+                  "at offset 0 run past the end of bufferViews[0] (36 bytes)");
+    f.doc["accessors"][0]["count"] = 0;
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "zero_count")); }),
+              d + "/zero_count.gltf: meshes[0].primitives[0]: empty mesh (no triangles)");
+  }
+  {
     // Issue 23: node i lists node i + 1 twice (a DAG): 2^n paths before; now refused at once.
     testsupport::GltfFixture f;
     const int m = f.mesh(f.positions(kTriangle));
