@@ -182,35 +182,49 @@ int run_render(const RenderArgs& a) {
     }
   }
 
-  if (!a.maps.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(a.maps, ec);
-    if (ec) throw CliError("--maps", "cannot create directory " + a.maps + " (" + ec.message() + ")");
-    for (const frame::NamedMap& m : frame::export_maps(*result))
-      scenes::io::write_exr_map(std::filesystem::path(a.maps) / (m.name + ".exr"), m.map);
-  }
-  std::vector<std::pair<std::filesystem::path, raster::ColorTarget>> heat_maps;
-  if (!a.aliasing.empty()) {
-    size_t measured = 0;
-    for (const frame::AliasingImage& img : result->aliasing) measured += img.measured > 0;
-    if (measured == 0)
-      throw CliError("--aliasing", "no light of this frame has a measured pixel (measured: shadowmap, cascades, "
-                                   "lispsm, frustum-faces, on pixels facing the light)");
-    const std::filesystem::path base(a.aliasing);
-    for (size_t i = 0; i < result->aliasing.size(); ++i) {
-      const frame::AliasingImage& img = result->aliasing[i];
-      if (img.measured == 0) continue;
-      std::printf("aliasing %s (%s): max %.3g, p95 %.3g, mean %.3g pixels per texel over %zu lit-facing pixels; "
-                  "storage factor %.3g\n",
-                  result->lights[i].name.c_str(), std::string(shading::tech::to_string(result->lights[i].technique)).c_str(),
-                  double(img.max), double(img.p95), double(img.mean), img.measured, double(img.storage_factor()));
-      std::filesystem::path file = base;
-      if (measured > 1) file.replace_filename(base.stem().string() + "-" + result->lights[i].name + ".png");
-      heat_maps.emplace_back(file, frame::aliasing_heat_map(img));
+  // Every output is staged, then committed together: a failure on any of them leaves none of the new files
+  // (and no maps directory this run created).
+  std::filesystem::path created_dir;
+  try {
+    scenes::io::WriteBatch batch;  // inside the try: its temporaries are gone before the handler runs
+    if (!a.maps.empty()) {
+      std::error_code ec;
+      if (!std::filesystem::exists(a.maps, ec)) {
+        std::filesystem::create_directories(a.maps, ec);
+        if (ec) throw CliError("--maps", "cannot create directory " + a.maps + " (" + ec.message() + ")");
+        created_dir = a.maps;
+      }
+      for (const frame::NamedMap& m : frame::export_maps(*result))
+        scenes::io::write_exr_map(batch, std::filesystem::path(a.maps) / (m.name + ".exr"), m.map);
     }
+    std::vector<std::pair<std::filesystem::path, raster::ColorTarget>> heat_maps;
+    if (!a.aliasing.empty()) {
+      size_t measured = 0;
+      for (const frame::AliasingImage& img : result->aliasing) measured += img.measured > 0;
+      if (measured == 0)
+        throw CliError("--aliasing", "no light of this frame has a measured pixel (measured: shadowmap, cascades, "
+                                     "lispsm, frustum-faces, on pixels facing the light)");
+      const std::filesystem::path base(a.aliasing);
+      for (size_t i = 0; i < result->aliasing.size(); ++i) {
+        const frame::AliasingImage& img = result->aliasing[i];
+        if (img.measured == 0) continue;
+        std::printf("aliasing %s (%s): max %.3g, p95 %.3g, mean %.3g pixels per texel over %zu lit-facing pixels; "
+                    "storage factor %.3g\n",
+                    result->lights[i].name.c_str(), std::string(shading::tech::to_string(result->lights[i].technique)).c_str(),
+                    double(img.max), double(img.p95), double(img.mean), img.measured, double(img.storage_factor()));
+        std::filesystem::path file = base;
+        if (measured > 1) file.replace_filename(base.stem().string() + "-" + result->lights[i].name + ".png");
+        heat_maps.emplace_back(file, frame::aliasing_heat_map(img));
+      }
+    }
+    for (const auto& [file, heat] : heat_maps) scenes::io::write_png(batch, file, heat);
+    scenes::io::write_png(batch, a.out, result->color);
+    batch.commit();
+  } catch (...) {
+    std::error_code ec;
+    if (!created_dir.empty()) std::filesystem::remove(created_dir, ec);  // only if it is still empty
+    throw;
   }
-  for (const auto& [file, heat] : heat_maps) scenes::io::write_png(file, heat);
-  scenes::io::write_png(a.out, result->color);
   return 0;
 }
 

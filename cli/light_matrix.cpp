@@ -42,9 +42,9 @@ LightMatrices read_light_matrices(const std::filesystem::path& path) {
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number like 1e999
     std::string what = e.what();
-    // nlohmann prefixes "[json.exception.parse_error.101] "; the rest reads well on its own.
+    // nlohmann prefixes "[json.exception.parse_error.101] " (or out_of_range.406); the rest reads well alone.
     if (const size_t close = what.find("] "); what.rfind("[json.exception", 0) == 0 && close != std::string::npos)
       what = what.substr(close + 2);
     throw CliError(file, "malformed JSON: " + what);

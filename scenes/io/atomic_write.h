@@ -4,13 +4,44 @@
 #pragma once
 #include <filesystem>
 #include <functional>
+#include <vector>
 
 namespace scenes::io {
 
-// Calls write(temporary path), then renames the temporary file to `path`. Throws IoError naming `path` when the
+// Calls write(temporary path), then renames the temporary file to `path`. Temporary files are named
+// `.STEM.tmp-PID-N.EXT`; ones left beside `path` by a process that no longer runs (a killed run) are removed
+// first. Throws IoError naming `path` when the
 // directory does not exist or the rename fails; an exception from `write` is rethrown after cleanup (an
 // IoError about the temporary name is rethrown as one about `path`).
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(const std::filesystem::path& temporary)>& write);
+
+// Several files written as one: each is written under its temporary name when it is staged, and commit()
+// renames them all into place. A batch destroyed without commit() removes its temporaries, so a run that fails
+// part way (a bad option found late, a full disk on the last file) leaves none of its new files.
+class WriteBatch {
+ public:
+  WriteBatch() = default;
+  WriteBatch(const WriteBatch&) = delete;
+  WriteBatch& operator=(const WriteBatch&) = delete;
+  ~WriteBatch();
+  // Calls write(temporary path) now; the file replaces `path` at commit(). Throws as write_atomically.
+  void stage(const std::filesystem::path& path, const std::function<void(const std::filesystem::path&)>& write);
+  // Renames every staged file into place in staging order, after checking that no target is a directory (then
+  // nothing moves). Throws IoError naming the file whose rename fails (the files before it are in place; its
+  // temporary and the later ones are removed).
+  void commit();
+
+ private:
+  struct Staged {
+    std::filesystem::path temporary, path;
+  };
+  std::vector<Staged> staged_;
+};
+
+// Writes `bytes` to `path` (created or truncated), checking every write, flushing to the device (fsync) and
+// checking the close: a full disk, a quota or an I/O error throws IoError naming `path` with the system's
+// reason. For writers that encode to memory first (PNG), so no failure can go unseen.
+void write_bytes(const std::filesystem::path& path, const void* bytes, size_t size);
 
 }  // namespace scenes::io

@@ -118,8 +118,14 @@ ExrMap exr_map_from(const raster::ColorTarget& target, int channel) {
 }
 
 void write_exr_map(const std::filesystem::path& path, const ExrMap& map) {
+  WriteBatch batch;
+  write_exr_map(batch, path, map);
+  batch.commit();
+}
+
+void write_exr_map(WriteBatch& batch, const std::filesystem::path& path, const ExrMap& map) {
   check(path, map);
-  write_atomically(path, [&](const std::filesystem::path& tmp) {
+  batch.stage(path, [&](const std::filesystem::path& tmp) {
     try {
       write_file(tmp, map);
     } catch (const std::exception& e) {

@@ -21,6 +21,7 @@
 
 #include "raster/state.h"
 #include "raster/target.h"
+#include "scenes/io/atomic_write.h"
 
 namespace scenes::io {
 
@@ -55,6 +56,8 @@ ExrMap exr_map_from(const raster::ColorTarget& target, int channel = 0);
 // width × height values, depth_format is not d16, d24 or d32f, a pass viewport lies outside the map, or the
 // file cannot be written.
 void write_exr_map(const std::filesystem::path& path, const ExrMap& map);
+// The same, staged in `batch` (it replaces `path` when the batch commits).
+void write_exr_map(WriteBatch& batch, const std::filesystem::path& path, const ExrMap& map);
 
 // Reads a map written by write_exr_map (or any scanline or tiled EXR with a `Z` channel: missing shadowlab
 // attributes read as empty strings and identity matrices). Throws IoError when the file cannot be read, has no

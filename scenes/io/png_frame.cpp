@@ -1,6 +1,7 @@
 // sRGB conversion of a colour target and the OpenImageIO PNG writer.
 #include "scenes/io/png_frame.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <array>
@@ -45,18 +46,29 @@ std::vector<uint8_t> srgb8_top_first(const raster::ColorTarget& target, bool alp
 }
 
 void write_png(const std::filesystem::path& path, const raster::ColorTarget& target, bool alpha) {
+  WriteBatch batch;
+  write_png(batch, path, target, alpha);
+  batch.commit();
+}
+
+void write_png(WriteBatch& batch, const std::filesystem::path& path, const raster::ColorTarget& target, bool alpha) {
   const std::vector<uint8_t> pixels = srgb8_top_first(target, alpha);
-  write_atomically(path, [&](const std::filesystem::path& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw IoError(tmp, "cannot create a PNG writer: " + OIIO::geterror());
+  // Encoded in memory, then written by write_bytes, which checks every write and the flush: the PNG library's
+  // own file writes do not report a full disk.
+  std::vector<unsigned char> png;
+  {
+    OIIO::Filesystem::IOVecOutput proxy(png);
+    auto out = OIIO::ImageOutput::create("png");
+    if (!out) throw IoError(path, "cannot create a PNG writer: " + OIIO::geterror());
     OIIO::ImageSpec spec(target.width(), target.height(), alpha ? 4 : 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     // GL colour is straight (unassociated) alpha: without this OpenImageIO would divide colour by alpha.
     spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!out->open(tmp.string(), spec)) throw IoError(tmp, out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::UINT8, pixels.data())) throw IoError(tmp, out->geterror());
-    if (!out->close()) throw IoError(tmp, out->geterror());
-  });
+    if (!out->set_ioproxy(&proxy) || !out->open(path.string(), spec)) throw IoError(path, out->geterror());
+    if (!out->write_image(OIIO::TypeDesc::UINT8, pixels.data())) throw IoError(path, out->geterror());
+    if (!out->close()) throw IoError(path, out->geterror());
+  }
+  batch.stage(path, [&](const std::filesystem::path& tmp) { write_bytes(tmp, png.data(), png.size()); });
 }
 
 }  // namespace scenes::io

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "raster/target.h"
+#include "scenes/io/atomic_write.h"
 
 namespace scenes::io {
 
@@ -16,5 +17,8 @@ std::vector<uint8_t> srgb8_top_first(const raster::ColorTarget& target, bool alp
 
 // Writes srgb8_top_first(target, alpha) as a PNG through a temporary file. Throws IoError.
 void write_png(const std::filesystem::path& path, const raster::ColorTarget& target, bool alpha = false);
+// The same, staged in `batch` (it replaces `path` when the batch commits).
+void write_png(WriteBatch& batch, const std::filesystem::path& path, const raster::ColorTarget& target,
+               bool alpha = false);
 
 }  // namespace scenes::io

@@ -189,6 +189,15 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
   expect_bad(shadowmap("").replace(shadowmap("").find("scene.json"), 10, "empty.json"), "empty.json", "d.exr");
   write(dir / "short.json", R"({"view_proj": [1, 0, 0]})");
   expect_bad(shadowmap("").replace(shadowmap("").find("m.json"), 6, "short.json"), "short.json", "d.exr");
+  // Issue 23: a number too large for a double ended in "internal error: [json.exception.out_of_range.406]".
+  write(dir / "huge.json", R"({"view_proj": [1e999, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]})");
+  expect_bad(shadowmap("").replace(shadowmap("").find("m.json"), 6, "huge.json"), "huge.json", "d.exr");
+  // Issue 23: a run that fails on its last output left the maps it had written; now it leaves nothing new
+  // (the PNG's place is taken by a directory, so only its rename fails).
+  fs::create_directory(dir / "taken.png");
+  expect_bad("render tutorial --size 32x32 --out taken.png --maps newmaps", "taken.png");
+  EXPECT_FALSE(fs::exists(dir / "newmaps"));
+  fs::remove(dir / "taken.png");
   expect_bad("inspect nothing.exr", "nothing.exr");
   expect_bad("render tutorial --size 16x16 --out nodir/f.png", "--out");
   expect_bad("diff nothing.exr d.exr", "nothing.exr");

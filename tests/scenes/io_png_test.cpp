@@ -4,11 +4,16 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <vector>
 
 #include "raster/target.h"
+#include "scenes/io/atomic_write.h"
 #include "scenes/io/io_error.h"
 #include "scenes/io/png_frame.h"
 #include "tests/support.h"
@@ -92,16 +97,51 @@ TEST(IoPng, LinearTargetsAreSrgbEncoded) {
 TEST(IoPng, FailedWritesLeaveNoFile) {
   const fs::path dir = testsupport::temp_dir("io_png_fail");
   raster::ColorTarget target(2, 2, raster::ColorFormat::rgba8, true);
-  // An extension no writer knows: the write fails after the temporary name was chosen.
+  // A directory where the file should go: the PNG is written under its temporary name, the rename fails.
+  fs::create_directory(dir / "frame.png");
   try {
-    scenes::io::write_png(dir / "frame.not-an-image-format", target);
+    scenes::io::write_png(dir / "frame.png", target);
     FAIL() << "no exception";
   } catch (const scenes::io::IoError& e) {
-    EXPECT_EQ(e.file(), dir / "frame.not-an-image-format");
-    EXPECT_EQ(std::string(e.what()).rfind((dir / "frame.not-an-image-format").string() + ": ", 0), 0u) << e.what();
+    EXPECT_EQ(e.file(), dir / "frame.png");
+    EXPECT_EQ(std::string(e.what()).rfind((dir / "frame.png").string() + ": ", 0), 0u) << e.what();
   }
   EXPECT_THROW(scenes::io::write_png(dir / "missing" / "frame.png", target), scenes::io::IoError);
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 0);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);  // the directory alone
+}
+
+// Issue 23: on a full disk the PNG path exited 0 with a truncated file. Every byte is now written through
+// write_bytes, which checks each write and the flush: /dev/full (always "no space left") makes it throw.
+TEST(IoPng, AFullDiskIsAnError) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "skipped: /dev/full not available";
+  const std::vector<unsigned char> bytes(100000, 7);
+  try {
+    scenes::io::write_bytes("/dev/full", bytes.data(), bytes.size());
+    FAIL() << "no exception";
+  } catch (const scenes::io::IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
+  }
+}
+
+// Issue 23: a killed run leaves its temporary file; the next write beside it removes temporaries of processes
+// that no longer run, and keeps those of live ones.
+TEST(IoPng, TemporariesOfDeadRunsAreRemoved) {
+  const fs::path dir = testsupport::temp_dir("io_png_stale");
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  int status = 0;
+  ::waitpid(child, &status, 0);  // its pid now names no process
+  const fs::path dead = dir / (".frame.tmp-" + std::to_string(child) + "-0.png");
+  const fs::path live = dir / (".frame.tmp-" + std::to_string(::getppid()) + "-3.png");
+  const fs::path other = dir / ".other.tmp-1-0.png";
+  for (const fs::path& p : {dead, live, other}) std::ofstream(p) << "partial";
+  raster::ColorTarget target(2, 2, raster::ColorFormat::rgba8, true);
+  scenes::io::write_png(dir / "frame.png", target);
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(other));  // another file's temporaries are left to its own writes
+  EXPECT_TRUE(fs::exists(dir / "frame.png"));
 }
 
 }  // namespace
