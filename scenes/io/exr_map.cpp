@@ -177,7 +177,12 @@ ExrMap read_exr_map(const std::filesystem::path& path) {
       if (!wc) throw IoError(path, pass_attr(i, "worldToCamera") + " is missing");
       if (!wn) throw IoError(path, pass_attr(i, "worldToNDC") + " is missing");
       const Imath::Box2i& b = vp->value();
-      p.viewport = raster::Rect{b.min.x, b.min.y, b.max.x - b.min.x + 1, b.max.y - b.min.y + 1};
+      // In 64 bits: a box from another writer may span the whole int range (issue 23: -2^31 overflowed).
+      const int64_t x0 = b.min.x, y0 = b.min.y, x1 = b.max.x, y1 = b.max.y;
+      if (x0 < 0 || y0 < 0 || x1 < x0 || y1 < y0 || x1 >= m.width || y1 >= m.height)
+        throw IoError(path, pass_attr(i, "viewport") + " lies outside the " + std::to_string(m.width) + " x " +
+                                std::to_string(m.height) + " map");
+      p.viewport = raster::Rect{int(x0), int(y0), int(x1 - x0 + 1), int(y1 - y0 + 1)};
       p.world_to_camera = to_glm(wc->value());
       p.world_to_ndc = to_glm(wn->value());
       if (auto* l = find<Imf::StringAttribute>(h, pass_attr(i, "label"))) p.label = l->value();

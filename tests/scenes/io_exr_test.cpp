@@ -7,12 +7,16 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfBoxAttribute.h>
+#include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfMatrixAttribute.h>
+#include <OpenEXR/ImfOutputFile.h>
 
 #include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -217,3 +221,31 @@ TEST(IoExr, AFailedWriteKeepsThePreviousFile) {
 }
 
 }  // namespace
+
+// Issue 23: an EXR from elsewhere whose pass viewport starts at -2^31 was accepted after a signed overflow; a
+// viewport outside the map is now refused, naming the attribute.
+TEST(IoExr, PassViewportsOutsideTheMapAreRefused) {
+  const fs::path dir = testsupport::temp_dir("io_exr_viewport");
+  const fs::path file = dir / "bad.exr";
+  Imf::Header header(4, 4);
+  header.channels().insert("Z", Imf::Channel(Imf::FLOAT));
+  header.insert("shadowlab:passCount", Imf::IntAttribute(1));
+  header.insert("shadowlab:pass0:viewport",
+                Imf::Box2iAttribute(Imath::Box2i(Imath::V2i(std::numeric_limits<int>::min(), 0), Imath::V2i(3, 3))));
+  header.insert("shadowlab:pass0:worldToCamera", Imf::M44fAttribute(Imath::M44f()));
+  header.insert("shadowlab:pass0:worldToNDC", Imf::M44fAttribute(Imath::M44f()));
+  std::vector<float> z(16, 0.5f);
+  {
+    Imf::OutputFile out(file.c_str(), header);
+    Imf::FrameBuffer fb;
+    fb.insert("Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float), 4 * sizeof(float)));
+    out.setFrameBuffer(fb);
+    out.writePixels(4);
+  }
+  try {
+    scenes::io::read_exr_map(file);
+    FAIL() << "no exception";
+  } catch (const scenes::io::IoError& e) {
+    EXPECT_EQ(std::string(e.what()), file.string() + ": shadowlab:pass0:viewport lies outside the 4 x 4 map");
+  }
+}
