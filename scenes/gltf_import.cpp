@@ -60,9 +60,16 @@ tinygltf::Model load_model(const std::filesystem::path& path, const std::string&
   const std::string dir = path.parent_path().empty() ? std::string(".") : path.parent_path().string();
   const auto length = static_cast<unsigned int>(size);
   const bool binary = length >= 4 && std::equal(bytes.get(), bytes.get() + 4, "glTF");
-  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.get(), length, dir)
-                         : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.get()),
-                                                      length, dir);
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.get(), length, dir)
+                : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.get()), length,
+                                             dir);
+  } catch (const std::exception& e) {
+    // tinygltf throws on some inconsistent files (issue 23: a GLB buffer of byteLength 0 over a BIN chunk).
+    throw SceneError(file, "", std::string(binary ? "malformed GLB: " : "malformed glTF: ") +
+                                   "the loader failed on it (" + clean_message(e.what()) + ")");
+  }
   if (!ok || !err.empty())
     throw SceneError(file, "", std::string(binary ? "malformed GLB: " : "malformed glTF: ") +
                                    clean_message(err.empty() ? "tinygltf refused it" : err));

@@ -232,6 +232,31 @@ TEST(SceneErrors, BrokenGltf) {
   testsupport::GltfFixture::write_bytes(dir / "cut.glb", glb);
   EXPECT_EQ(error_of([&] { scenes::load_scene(dir / "cut.glb"); }),
             d + "/cut.glb: malformed GLB: Invalid glTF binary.");
+  // Issue 23: a GLB whose buffer claims 0 bytes ended in "internal error: vector::_M_range_check"; without a
+  // BIN chunk, and with one.
+  for (const bool bin_chunk : {false, true}) {
+    nlohmann::json doc = f.doc;
+    doc["buffers"] = nlohmann::json::array({{{"byteLength", 0}}});
+    std::string json = doc.dump();
+    while (json.size() % 4) json.push_back(' ');
+    std::vector<uint8_t> body = f.bin;
+    while (body.size() % 4) body.push_back(0);
+    std::vector<uint8_t> zero;
+    auto u32 = [&](uint32_t v) {
+      for (int i = 0; i < 4; ++i) zero.push_back(uint8_t(v >> (8 * i)));
+    };
+    const size_t total = 12 + 8 + json.size() + (bin_chunk ? 8 + body.size() : 0);
+    u32(0x46546C67u), u32(2), u32(uint32_t(total)), u32(uint32_t(json.size())), u32(0x4E4F534Au);
+    zero.insert(zero.end(), json.begin(), json.end());
+    if (bin_chunk) {
+      u32(uint32_t(body.size())), u32(0x004E4942u);
+      zero.insert(zero.end(), body.begin(), body.end());
+    }
+    testsupport::GltfFixture::write_bytes(dir / "zero_buffer.glb", zero);
+    EXPECT_THAT(error_of([&] { scenes::load_scene(dir / "zero_buffer.glb"); }),
+                testing::StartsWith(d + "/zero_buffer.glb: malformed GLB: "))
+        << bin_chunk;
+  }
   // Not a glTF at all.
   std::ofstream(dir / "garbage.glb") << "hello";
   EXPECT_EQ(error_of([&] { scenes::load_scene(dir / "garbage.glb"); }),
