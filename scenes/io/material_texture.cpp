@@ -2,8 +2,11 @@
 #include "scenes/io/material_texture.h"
 
 #include <OpenImageIO/imageio.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <vector>
 
 #include "scenes/io/io_error.h"
@@ -23,6 +26,28 @@ void expand(const T* p, int n, T one, T out[4]) {
   }
 }
 
+// Sends stderr to /dev/null while it lives. libpng (inside OpenImageIO) prints its own "libpng error: ..." line
+// on a broken file before OpenImageIO returns the same error to us; the caller reports it once, in one line.
+class QuietStderr {
+ public:
+  QuietStderr() {
+    std::fflush(stderr);
+    saved_ = ::dup(2);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~QuietStderr() {
+    std::fflush(stderr);
+    if (saved_ >= 0) ::dup2(saved_, 2), ::close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
 }  // namespace
 
 shading::Texture2D load_texture(const std::filesystem::path& path, const TextureLoadOptions& options) {
@@ -31,6 +56,7 @@ shading::Texture2D load_texture(const std::filesystem::path& path, const Texture
   // Straight alpha, as GL texture data is: by default OpenImageIO would premultiply colour by alpha.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
+  const QuietStderr quiet;
   auto in = OIIO::ImageInput::open(path.string(), &config);
   if (!in) throw IoError(path, "cannot read the image: " + OIIO::geterror());
   const OIIO::ImageSpec spec = in->spec();

@@ -198,6 +198,13 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
   expect_bad("render tutorial --size 32x32 --out taken.png --maps newmaps", "taken.png");
   EXPECT_FALSE(fs::exists(dir / "newmaps"));
   fs::remove(dir / "taken.png");
+  // Issue 23: a truncated PNG made libpng print a second line before ours.
+  {
+    ASSERT_EQ(shadowlab(dir, "render tutorial --size 64x36 --out whole.png").code, 0);
+    const std::string png = testsupport::slurp(dir / "whole.png");
+    std::ofstream(dir / "cut.png", std::ios::binary) << png.substr(0, png.size() / 2);
+    expect_bad("diff whole.png cut.png", "cut.png");
+  }
   expect_bad("inspect nothing.exr", "nothing.exr");
   expect_bad("render tutorial --size 16x16 --out nodir/f.png", "--out");
   expect_bad("diff nothing.exr d.exr", "nothing.exr");
