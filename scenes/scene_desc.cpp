@@ -2,6 +2,8 @@
 #include "scenes/scene_desc.h"
 
 #include <array>
+#include <cmath>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -83,6 +85,17 @@ std::optional<Problem> light_problem(const Light& l) {
   if (s.map_size < 1 || s.map_size > 16384) return Problem{"shadow.map_size", "must be between 1 and 16384"};
   if (s.poisson_taps != 4 && s.poisson_taps != 16) return Problem{"shadow.poisson_taps", "expected 4 or 16"};
   if (!(s.poisson_spread > 0.0f)) return Problem{"shadow.poisson_spread", "must be positive"};
+  // Bias values are checked here, where the file is known, not first by the frame (issue 23: a scene's
+  // bias_slope_max of -1 was reported as the --bias-slope-max option).
+  const std::pair<const char*, float> non_negative[] = {{"shadow.bias.constant", s.bias.constant},
+                                                        {"shadow.bias.slope", s.bias.slope},
+                                                        {"shadow.bias.slope_max", s.bias.slope_max},
+                                                        {"shadow.bias.normal_offset", s.bias.normal_offset}};
+  for (const auto& [field, v] : non_negative)
+    if (!(std::isfinite(v) && v >= 0.0f)) return Problem{field, "must be a finite number of 0 or more"};
+  for (const auto& [field, v] : {std::pair{"shadow.bias.offset_factor", s.bias.offset_factor},
+                                 std::pair{"shadow.bias.offset_units", s.bias.offset_units}})
+    if (!std::isfinite(v)) return Problem{field, "must be a finite number"};
   return std::nullopt;
 }
 

@@ -29,13 +29,14 @@ shading::Light lighting_light(const scenes::Light& l) {
   return s;
 }
 
-// An override if given, else the light's value; finite and >= 0 (> 0 with `positive`) unless `signed_ok`.
-float checked_value(std::optional<float> given, float light_value, const char* field, bool positive = false,
-                    bool signed_ok = false) {
+// An override if given, else the light's value; finite and >= 0 (> 0 with `positive`) unless `signed_ok`. A bad
+// value is named where it came from: the override's field, or the light's (`at` + ".shadow." + field).
+float checked_value(std::optional<float> given, float light_value, const std::string& at, const char* field,
+                    bool positive = false, bool signed_ok = false) {
   const float v = given.value_or(light_value);
   if (!std::isfinite(v) || (!signed_ok && (positive ? !(v > 0.0f) : v < 0.0f)))
-    throw FrameError(std::string(field) + ": " + std::to_string(v) + " must be a finite number" +
-                     (signed_ok ? "" : positive ? " above 0" : " of 0 or more"));
+    throw FrameError((given ? std::string(field) : at + ".shadow." + field) + ": " + std::to_string(v) +
+                     " must be a finite number" + (signed_ok ? "" : positive ? " above 0" : " of 0 or more"));
   return v;
 }
 
@@ -64,14 +65,15 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
   c.depth_format = o.depth_format.value_or(s.depth_format);
   c.filter_params.taps = o.poisson_taps.value_or(int(s.poisson_taps));
   if (c.filter_params.taps != 4 && c.filter_params.taps != 16)
-    throw FrameError("poisson_taps: " + std::to_string(c.filter_params.taps) + " is not 4 or 16");
-  c.filter_params.spread = checked_value(o.poisson_spread, s.poisson_spread, "poisson_spread", true);
-  c.bias.constant = checked_value(o.bias_constant, c.bias.constant, "bias.constant");
-  c.bias.slope = checked_value(o.bias_slope, c.bias.slope, "bias.slope");
-  c.bias.slope_max = checked_value(o.bias_slope_max, c.bias.slope_max, "bias.slope_max");
-  c.bias.offset_factor = checked_value(o.offset_factor, c.bias.offset_factor, "bias.offset_factor", false, true);
-  c.bias.offset_units = checked_value(o.offset_units, c.bias.offset_units, "bias.offset_units", false, true);
-  c.bias.normal_offset = checked_value(o.normal_offset, c.bias.normal_offset, "bias.normal_offset");
+    throw FrameError((o.poisson_taps ? std::string("poisson_taps") : at + ".shadow.poisson_taps") + ": " +
+                     std::to_string(c.filter_params.taps) + " is not 4 or 16");
+  c.filter_params.spread = checked_value(o.poisson_spread, s.poisson_spread, at, "poisson_spread", true);
+  c.bias.constant = checked_value(o.bias_constant, c.bias.constant, at, "bias.constant");
+  c.bias.slope = checked_value(o.bias_slope, c.bias.slope, at, "bias.slope");
+  c.bias.slope_max = checked_value(o.bias_slope_max, c.bias.slope_max, at, "bias.slope_max");
+  c.bias.offset_factor = checked_value(o.offset_factor, c.bias.offset_factor, at, "bias.offset_factor", false, true);
+  c.bias.offset_units = checked_value(o.offset_units, c.bias.offset_units, at, "bias.offset_units", false, true);
+  c.bias.normal_offset = checked_value(o.normal_offset, c.bias.normal_offset, at, "bias.normal_offset");
 
   // The technique's parameters: the light's own (those its technique takes: a --technique override may have
   // changed it), then the frame's.

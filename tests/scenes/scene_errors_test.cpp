@@ -264,6 +264,15 @@ TEST(SceneErrors, BrokenGltf) {
                 "invalid literal; last read: 'h'");
 }
 
+// Issue 23: a scene's bad bias value was reported as the command-line option that would override it; it is
+// now refused when the scene is loaded, naming the file and the field.
+TEST(SceneErrors, BadBiasValuesNameTheSceneField) {
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"bias": {"slope_max": -1}}}]})"),
+            "scene.json: lights[0].shadow.bias.slope_max: must be a finite number of 0 or more");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "spot", "shadow": {"bias": {"mode": "normal", "normal_offset": -0.5}}}]})"),
+            "scene.json: lights[0].shadow.bias.normal_offset: must be a finite number of 0 or more");
+}
+
 // Issue 23: objects nested 20,000 deep overflowed the stack (and 10,000 took 1.8 GB); deeper than 256 levels
 // is refused at once, naming the top-level object; 256 levels load.
 TEST(SceneErrors, DeeplyNestedObjects) {

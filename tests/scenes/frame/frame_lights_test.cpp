@@ -96,3 +96,19 @@ TEST(FrameLights, BadOverridesNameTheField) {
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.params["stratify"] = std::string("diagonal"); }).rfind("lights[0].shadow.params.stratify: ", 0), 0u);
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.offset_factor = -3.0f; }), "no error");  // signed is fine
 }
+
+// Issue 23: a bad value of the light's own (not overridden) was named as the override's field, which the CLI
+// shows as its option; it is named as the light's field.
+TEST(FrameLights, BadLightValuesNameTheLightsField) {
+  scenes::Light sun = scenes::builtin_scene("tutorial").lights.at(0);
+  sun.shadow.bias.slope_max = -1.0f;
+  try {
+    frame::resolve_light(sun, 2, frame::FrameConfig{});
+    FAIL() << "no error";
+  } catch (const frame::FrameError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("lights[2].shadow.bias.slope_max: ", 0), 0u) << e.what();
+  }
+  frame::FrameConfig o;
+  o.bias_slope_max = 0.02f;  // the override replaces the bad value
+  EXPECT_NO_THROW(frame::resolve_light(sun, 2, o));
+}
