@@ -58,10 +58,10 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
   if (o.bias) c.bias.mode = *o.bias;
   c.cull_front = o.cull_front.value_or(s.cull_front);
   c.map_size = o.map_size.value_or(int(s.map_size));
-  const int min_size = info.reads_filter ? 16 : 1;
-  if (c.map_size < min_size || c.map_size > 16384)
-    throw FrameError(std::string(o.map_size ? "map_size" : at + ".shadow.map_size") + ": " +
-                     std::to_string(c.map_size) + " is outside " + std::to_string(min_size) + "..16384");
+  // Checked before anything is allocated (issue 23: a 16384 cube map failed in the target's constructor, as
+  // "target size: width 49152"), named where the value came from.
+  if (auto why = tech::map_size_problem(c.technique, c.map_size))
+    throw FrameError(std::string(o.map_size ? "map_size" : at + ".shadow.map_size") + ": " + *why);
   c.depth_format = o.depth_format.value_or(s.depth_format);
   c.filter_params.taps = o.poisson_taps.value_or(int(s.poisson_taps));
   if (c.filter_params.taps != 4 && c.filter_params.taps != 16)

@@ -272,6 +272,32 @@ constexpr std::optional<DepthFormat> parse_depth_format(std::string_view s) {
   return detail::parse_in<DepthFormat>(kDepthFormatNames, s);
 }
 
+// The largest map side a technique accepts: where its maps share one target (cube: 3 × 2 faces; paraboloid:
+// two side by side; cascades and frustum faces: an atlas two maps wide), that target stays within 16384 texels
+// a side. The pyramid's side must also be even (map_size_problem).
+constexpr int max_map_size(Technique t) {
+  switch (t) {
+    case Technique::cube: return 16384 / 3;
+    case Technique::paraboloid:
+    case Technique::cascades:
+    case Technique::frustum_faces: return 16384 / 2;
+    default: return 16384;
+  }
+}
+
+// What is wrong with map side `size` for technique t; none when it is fine.
+inline std::optional<std::string> map_size_problem(Technique t, int size) {
+  const int lo = info(t).reads_filter ? 16 : 1, hi = max_map_size(t);
+  if (size < lo || size > hi)
+    return std::to_string(size) + " is outside " + std::to_string(lo) + ".." + std::to_string(hi) +
+           (hi < 16384 ? " for technique " + std::string(info(t).name) + " (its maps share one target of at most 16384 "
+                                                                          "texels a side)"
+                       : std::string());
+  if (t == Technique::pyramid && size % 2 != 0)
+    return "the pyramid map side " + std::to_string(size) + " must be even (two halves per axis)";
+  return std::nullopt;
+}
+
 // "directional, spot": the light types a technique serves, for `list` and error messages.
 inline std::string light_names(uint8_t mask) {
   std::string out;

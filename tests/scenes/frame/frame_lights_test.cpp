@@ -112,3 +112,29 @@ TEST(FrameLights, BadLightValuesNameTheLightsField) {
   o.bias_slope_max = 0.02f;  // the override replaces the bad value
   EXPECT_NO_THROW(frame::resolve_light(sun, 2, o));
 }
+
+// Issue 23: map sides a technique cannot hold are refused before anything is allocated, named where they came
+// from (the override, shown by the CLI as --shadow-size, or the light's own setting).
+TEST(FrameLights, MapSidesATechniqueCannotHoldAreRefusedEarly) {
+  const scenes::Scene pyramid = scenes::builtin_scene("pyramid");
+  scenes::Light lamp = pyramid.lights.at(0);
+  auto message = [&](const scenes::Light& l, const frame::FrameConfig& o) {
+    try {
+      frame::resolve_light(l, 0, o);
+    } catch (const frame::FrameError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  frame::FrameConfig o;
+  o.technique = shading::tech::Technique::cube;
+  o.map_size = 16384;
+  EXPECT_EQ(message(lamp, o), "map_size: 16384 is outside 16..5461 for technique cube (its maps share one target of "
+                              "at most 16384 texels a side)");
+  o.map_size = 5461;
+  EXPECT_EQ(message(lamp, o), "no error");
+  lamp.shadow.technique = shading::tech::Technique::pyramid;
+  lamp.shadow.map_size = 63;
+  EXPECT_EQ(message(lamp, frame::FrameConfig{}),
+            "lights[0].shadow.map_size: the pyramid map side 63 must be even (two halves per axis)");
+}
