@@ -82,7 +82,8 @@ std::optional<Problem> light_problem(const Light& l) {
   for (const auto& [key, value] : l.shadow.params)
     if (auto why = param_problem(l.shadow.technique, key, value)) return Problem{"shadow.params." + key, *why};
   const ShadowSettings& s = l.shadow;
-  if (s.map_size < 1 || s.map_size > 16384) return Problem{"shadow.map_size", "must be between 1 and 16384"};
+  if (s.map_size > 16384) return Problem{"shadow.map_size", "must be between 1 and 16384"};
+  if (auto why = shading::tech::map_size_problem(s.technique, int(s.map_size))) return Problem{"shadow.map_size", *why};
   if (s.poisson_taps != 4 && s.poisson_taps != 16) return Problem{"shadow.poisson_taps", "expected 4 or 16"};
   if (!(s.poisson_spread > 0.0f)) return Problem{"shadow.poisson_spread", "must be positive"};
   // Bias values are checked here, where the file is known, not first by the frame (issue 23: a scene's

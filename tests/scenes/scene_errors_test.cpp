@@ -273,6 +273,15 @@ TEST(SceneErrors, BadBiasValuesNameTheSceneField) {
             "scene.json: lights[0].shadow.bias.normal_offset: must be a finite number of 0 or more");
 }
 
+// Issue 23: a scene's map size its technique cannot hold is refused when the scene loads, naming the file.
+TEST(SceneErrors, MapSizesTheTechniqueCannotHold) {
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "position": [0, 2, 0], "shadow": {"map_size": 8000}}]})"),
+            "scene.json: lights[0].shadow.map_size: 8000 is outside 16..5461 for technique cube (its maps share one "
+            "target of at most 16384 texels a side)");
+  EXPECT_EQ(json_error(R"({"lights": [{"type": "hemispherical", "position": [0, 2, 0], "shadow": {"map_size": 63}}]})"),
+            "scene.json: lights[0].shadow.map_size: the pyramid map side 63 must be even (two halves per axis)");
+}
+
 // Issue 23: objects nested 20,000 deep overflowed the stack (and 10,000 took 1.8 GB); deeper than 256 levels
 // is refused at once, naming the top-level object; 256 levels load.
 TEST(SceneErrors, DeeplyNestedObjects) {
