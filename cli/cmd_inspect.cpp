@@ -8,6 +8,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/map_stats.h"
+#include "raster/limits.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/png_frame.h"
 
@@ -54,6 +55,12 @@ int run_inspect(const InspectArgs& a) {
     print_matrix(("pass " + std::to_string(i) + " worldToNDC").c_str(), p.world_to_ndc);
   }
   if (!a.png.empty()) {
+    // A map from elsewhere may exceed what a frame target holds (issue 23: 16385 x 1 failed with the target's
+    // internal wording).
+    if (map.width > raster::kMaxTargetSize || map.height > raster::kMaxTargetSize)
+      throw CliError("--png", "a preview of a " + std::to_string(map.width) + " x " + std::to_string(map.height) +
+                                  " map is larger than " + std::to_string(raster::kMaxTargetSize) +
+                                  " pixels a side; the statistics above are complete");
     scenes::io::write_png(a.png, false_colour(map, s));
     std::printf("preview: %s\n", a.png.c_str());
   }

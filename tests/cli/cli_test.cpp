@@ -205,6 +205,17 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
     std::ofstream(dir / "cut.png", std::ios::binary) << png.substr(0, png.size() / 2);
     expect_bad("diff whole.png cut.png", "cut.png");
   }
+  // Issue 23: a valid map wider than a frame target; its preview is refused in our words, not the target's.
+  {
+    scenes::io::ExrMap wide;
+    wide.width = 16385;
+    wide.height = 1;
+    wide.z.assign(16385, 0.5f);
+    wide.depth_format = "d32f";
+    scenes::io::write_exr_map(dir / "wide.exr", wide);
+    expect_bad("inspect wide.exr --png wide.png", "--png", "wide.png");
+    EXPECT_EQ(shadowlab(dir, "inspect wide.exr").code, 0);
+  }
   expect_bad("inspect nothing.exr", "nothing.exr");
   expect_bad("render tutorial --size 16x16 --out nodir/f.png", "--out");
   expect_bad("diff nothing.exr d.exr", "nothing.exr");
