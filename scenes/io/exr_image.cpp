@@ -48,9 +48,15 @@ const ExrChannel* ExrImage::find(const std::string& name) const {
 }
 
 void write_exr_image(const std::filesystem::path& path, const ExrImage& img) {
+  WriteBatch batch;
+  write_exr_image(batch, path, img);
+  batch.commit();
+}
+
+void write_exr_image(WriteBatch& batch, const std::filesystem::path& path, const ExrImage& img) {
   check(path, img);
   const size_t w = size_t(img.width), h = size_t(img.height);
-  write_atomically(path, [&](const std::filesystem::path& tmp) {
+  batch.stage(path, [&](const std::filesystem::path& tmp) {
     try {
       Imf::Header header(img.width, img.height);
       header.compression() = Imf::ZIP_COMPRESSION;

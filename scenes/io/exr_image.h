@@ -23,6 +23,9 @@ struct ExrImage {
 // Writes every channel as FLOAT (ZIP compression) through a temporary file. Throws IoError naming `path` for an
 // empty size, a channel of the wrong length, a duplicate or empty channel name, or a failed write.
 void write_exr_image(const std::filesystem::path& path, const ExrImage& image);
+// The same, staged in `batch` (atomic_write.h): it replaces `path` when the batch commits.
+class WriteBatch;
+void write_exr_image(WriteBatch& batch, const std::filesystem::path& path, const ExrImage& image);
 
 // Reads every channel of an EXR file as floats. Throws IoError naming `path`.
 ExrImage read_exr_image(const std::filesystem::path& path);
