@@ -1,0 +1,273 @@
+// `shadowlab eval SCENE`: every combination of --techniques x --filters x --biases x --sizes rendered on the same
+// view and scored against the exact ray-cast shadow (scenes/reference/): per light, false-shadowed and false-lit
+// percentages of the lit-facing pixels near a boundary and elsewhere, mean |S - V|, and the map and camera pass
+// times. Writes DIR/eval.csv, DIR/eval.json and one error map per combination (DIR/<combination>.png). Every
+// option is checked and every combination rendered before the first file is written, so a failed run writes none.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_common.h"
+#include "raster/renderer.h"
+#include "scenes/frame/frame.h"
+#include "scenes/io/atomic_write.h"
+#include "scenes/io/io_error.h"
+#include "scenes/io/png_frame.h"
+#include "scenes/reference/error_map.h"
+#include "scenes/reference/frame_reference.h"
+#include "scenes/shadow_settings.h"
+
+namespace cli {
+namespace {
+
+namespace tech = shading::tech;
+
+struct EvalArgs {
+  std::string scene, techniques, filters, biases, sizes, size = "1280x720", out = "eval";
+  int threads = -1;
+  int near_radius = 2;
+};
+
+// One point of the sweep; an unset field keeps each light's own setting.
+struct Combination {
+  std::optional<tech::Technique> technique;
+  std::optional<tech::FilterKind> filter;
+  std::optional<tech::BiasMode> bias;
+  std::optional<int> map_size;
+  std::string label() const {
+    return (technique ? std::string(tech::info(*technique).name) : std::string("scene")) + "-" +
+           (filter ? std::string(tech::to_string(*filter)) : "scene") + "-" +
+           (bias ? std::string(tech::to_string(*bias)) : "scene") + "-" +
+           (map_size ? std::to_string(*map_size) : "scene");
+  }
+};
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
+  if (text.empty()) return out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
+  if (text.back() == ',') out.emplace_back();
+  return out;
+}
+
+// A list of names through a vocabulary parser; empty: one unset entry (the lights' own settings).
+template <class T, class Parse>
+std::vector<std::optional<T>> parse_names(const std::string& text, const std::string& option, const char* what,
+                                          Parse parse, std::span<const scenes::NamedEntry> table) {
+  std::vector<std::optional<T>> out;
+  for (const std::string& name : split_list(text)) {
+    const auto v = parse(name);
+    if (!v) throw CliError(option, std::string("unknown ") + what + " '" + name + "' (known: " + scenes::join_names(table) + ")");
+    out.push_back(T(*v));
+  }
+  if (out.empty()) out.push_back(std::nullopt);
+  return out;
+}
+
+std::vector<std::optional<int>> parse_sizes(const std::string& text) {
+  std::vector<std::optional<int>> out;
+  for (const std::string& item : split_list(text)) {
+    size_t used = 0;
+    long long v = -1;
+    try {
+      v = std::stoll(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (item.empty() || used != item.size()) throw CliError("--sizes", "'" + item + "' is not a whole number");
+    if (v < 16 || v > 16384) throw CliError("--sizes", std::to_string(v) + " is outside 16..16384");
+    out.push_back(int(v));
+  }
+  if (out.empty()) out.push_back(std::nullopt);
+  return out;
+}
+
+// The option a FrameError's field came from.
+CliError as_cli_error(const frame::FrameError& e) {
+  const std::string what = e.what();
+  const size_t colon = what.find(": ");
+  const std::string field = colon == std::string::npos ? "" : what.substr(0, colon);
+  std::string option = field;
+  if (field == "size") option = "--size";
+  else if (field == "map_size") option = "--sizes";
+  else if (field.find("technique") != std::string::npos) option = "--techniques";
+  else if (field.find("filter") != std::string::npos) option = "--filters";
+  else if (field.find("bias") != std::string::npos) option = "--biases";
+  return CliError(option.empty() ? "eval" : option, colon == std::string::npos ? what : what.substr(colon + 2));
+}
+
+// One row: a combination's score for one light.
+nlohmann::json row_json(const scenes::Scene& scene, const Combination& c, size_t light,
+                        const reference::LightScore& s, const frame::FrameStats& stats) {
+  auto pct = [&](size_t n) { return s.percent(n); };
+  return {{"combination", c.label()},
+          {"technique", c.technique ? std::string(tech::info(*c.technique).name) : std::string("scene")},
+          {"filter", c.filter ? std::string(tech::to_string(*c.filter)) : "scene"},
+          {"bias", c.bias ? std::string(tech::to_string(*c.bias)) : "scene"},
+          {"map_size", c.map_size ? *c.map_size : 0},
+          {"light", light},
+          {"light_name", scene.lights[light].name},
+          {"scored_pixels", s.scored},
+          {"false_shadowed_pct", pct(s.false_shadowed())},
+          {"false_shadowed_near_pct", pct(s.false_shadowed_near)},
+          {"false_shadowed_elsewhere_pct", pct(s.false_shadowed_elsewhere)},
+          {"false_lit_pct", pct(s.false_lit())},
+          {"false_lit_near_pct", pct(s.false_lit_near)},
+          {"false_lit_elsewhere_pct", pct(s.false_lit_elsewhere)},
+          {"false_shadowed_pixels", s.false_shadowed()},
+          {"false_lit_pixels", s.false_lit()},
+          {"mean_abs_error", s.mean_abs_error},
+          {"largest_false_lit_group", s.largest_false_lit_group},
+          {"longest_false_lit_run", s.longest_false_lit_run},
+          {"map_pass_ms", stats.shadow_ms},
+          {"camera_pass_ms", stats.camera_ms}};
+}
+
+const char* const kColumns[] = {"combination", "technique", "filter", "bias", "map_size", "light", "light_name",
+                                "scored_pixels", "false_shadowed_pct", "false_shadowed_near_pct",
+                                "false_shadowed_elsewhere_pct", "false_lit_pct", "false_lit_near_pct",
+                                "false_lit_elsewhere_pct", "false_shadowed_pixels", "false_lit_pixels",
+                                "mean_abs_error", "largest_false_lit_group", "longest_false_lit_run", "map_pass_ms",
+                                "camera_pass_ms"};
+
+std::string csv(const nlohmann::json& rows) {
+  std::string out;
+  for (const char* c : kColumns) out += std::string(out.empty() ? "" : ",") + c;
+  out += "\n";
+  for (const auto& r : rows) {
+    std::string line;
+    for (const char* c : kColumns) {
+      const auto& v = r.at(c);
+      std::string cell = v.is_string() ? v.get<std::string>() : v.dump();
+      if (cell.find_first_of(",\"\n") != std::string::npos) {  // RFC 4180 quoting
+        std::string q = "\"";
+        for (char ch : cell) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+        cell = q + "\"";
+      }
+      line += (line.empty() && c == kColumns[0] ? "" : ",") + cell;
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  scenes::io::write_atomically(path, [&](const std::filesystem::path& tmp) {
+    std::ofstream f(tmp, std::ios::binary);
+    f << text;
+    f.close();
+    if (!f) throw scenes::io::IoError(tmp, "cannot write");
+  });
+}
+
+int run_eval(const EvalArgs& a) {
+  const Size2 size = parse_size(a.size, "--size");
+  const auto techniques = parse_names<tech::Technique>(a.techniques, "--techniques", "technique",
+                                                       scenes::parse_technique, scenes::technique_names());
+  for (const auto& t : techniques) {
+    if (!t) continue;
+    if (!tech::info(*t).built) throw CliError("--techniques", "technique " + std::string(tech::info(*t).name) + " is not built yet");
+    if (tech::find_impl(*t) && tech::find_impl(*t)->application == tech::Application::receiver_passes)
+      throw CliError("--techniques", "technique " + std::string(tech::info(*t).name) +
+                                         " is applied as receiver passes, whose shadow the per-pixel record does not hold yet");
+  }
+  const auto filters = parse_names<tech::FilterKind>(a.filters, "--filters", "filter", scenes::parse_filter,
+                                                     scenes::filter_names());
+  const auto biases = parse_names<tech::BiasMode>(a.biases, "--biases", "bias mode", scenes::parse_bias_mode,
+                                                  scenes::bias_mode_names());
+  const auto sizes = parse_sizes(a.sizes);
+  if (a.threads < -1) throw CliError("--threads", "expected 0 or more threads");
+  if (a.near_radius < 0 || a.near_radius > 64) throw CliError("--near-radius", "expected 0..64 pixels");
+  std::error_code ec;
+  if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
+    throw CliError("--out", a.out + " exists and is not a directory");
+  check_output_dir(a.out, "--out");  // the folder it goes in must exist; it is created itself
+
+  std::vector<Combination> combos;
+  for (const auto& t : techniques)
+    for (const auto& f : filters)
+      for (const auto& b : biases)
+        for (const auto& s : sizes) combos.push_back({t, f, b, s});
+
+  const scenes::Scene scene = load_scene_or_builtin(a.scene);
+  raster::Renderer renderer(a.threads);
+  frame::FrameConfig base;
+  base.width = size.width, base.height = size.height;
+  base.export_maps = false;
+  reference::ScoreOptions options;
+  options.near_radius = a.near_radius;
+
+  try {
+    Progress progress;
+    progress.update("reference: casting rays");
+    const reference::FrameReference ref = reference::reference_for(scene, base, renderer);
+    const double rays_per_s = ref.exact.ms > 0 ? double(ref.exact.rays) / (ref.exact.ms / 1000.0) : 0.0;
+    std::printf("reference: %zu triangles, BVH %.1f ms; %zu rays in %.1f ms (%.2f Mrays/s); epsilon %g\n",
+                ref.triangles, ref.bvh_ms, ref.exact.rays, ref.exact.ms, rays_per_s / 1e6, double(ref.exact.epsilon));
+
+    nlohmann::json rows = nlohmann::json::array();
+    std::vector<std::pair<std::string, raster::ColorTarget>> maps;
+    for (size_t k = 0; k < combos.size(); ++k) {
+      const Combination& c = combos[k];
+      progress.update("combination " + std::to_string(k + 1) + "/" + std::to_string(combos.size()) + ": " + c.label());
+      frame::FrameConfig config = base;
+      config.technique = c.technique, config.filter = c.filter, config.bias = c.bias, config.map_size = c.map_size;
+      const reference::ScoredFrame sf = reference::score_config(scene, config, renderer, ref, options);
+      for (size_t l = 0; l < sf.score.lights.size(); ++l) {
+        rows.push_back(row_json(scene, c, l, sf.score.lights[l], sf.frame.stats));
+        const reference::LightScore& s = sf.score.lights[l];
+        std::printf("%s light%zu: false-shadowed %.3f%% (near %.3f%%), false-lit %.3f%% (near %.3f%%), mean |S-V| %.4f\n",
+                    c.label().c_str(), l, s.percent(s.false_shadowed()), s.percent(s.false_shadowed_near),
+                    s.percent(s.false_lit()), s.percent(s.false_lit_near), s.mean_abs_error);
+      }
+      maps.emplace_back(c.label(), reference::error_map(sf.frame.color, sf.score.errors));
+    }
+
+    const nlohmann::json report = {
+        {"scene", scene.name.empty() ? a.scene : scene.name},
+        {"frame", {{"width", size.width}, {"height", size.height}}},
+        {"reference",
+         {{"triangles", ref.triangles}, {"bvh_ms", ref.bvh_ms}, {"rays", ref.exact.rays}, {"rays_ms", ref.exact.ms},
+          {"rays_per_second", rays_per_s}, {"epsilon", ref.exact.epsilon}}},
+        {"scoring", {{"shadow_below", options.shadow_below}, {"near_radius_pixels", options.near_radius}}},
+        {"results", rows}};
+    std::filesystem::create_directories(a.out, ec);
+    if (ec) throw CliError("--out", "cannot create directory " + a.out + " (" + ec.message() + ")");
+    const std::filesystem::path dir(a.out);
+    for (const auto& [label, image] : maps) scenes::io::write_png(dir / (label + ".png"), image);
+    write_text(dir / "eval.json", report.dump(2) + "\n");
+    write_text(dir / "eval.csv", csv(rows));
+  } catch (const frame::FrameError& e) {
+    throw as_cli_error(e);
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_eval_command(CLI::App& parent) {
+  auto args = std::make_shared<EvalArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "eval", "Score shadow techniques against the exact ray-cast shadow over a sweep of settings");
+  app->add_option("scene", args->scene, "Scene: a JSON file, a .gltf/.glb file, or a built-in name (see list)")
+      ->required();
+  app->add_option("--techniques", args->techniques, "Comma-separated techniques (default: each light's own)");
+  app->add_option("--filters", args->filters, "Comma-separated filters (default: each light's own)");
+  app->add_option("--biases", args->biases, "Comma-separated bias modes (default: each light's own)");
+  app->add_option("--sizes", args->sizes, "Comma-separated shadow map sides, 16..16384 (default: each light's own)");
+  app->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (default 1280x720)");
+  app->add_option("--threads", args->threads, "Worker threads (0: inline; default: all cores)");
+  app->add_option("--near-radius", args->near_radius, "Pixels from an exact shadow boundary counted as near it (default 2)");
+  app->add_option("--out", args->out, "Output directory for eval.csv, eval.json and the error maps (default eval)");
+  return {app, [args] { return run_eval(*args); }};
+}
+
+}  // namespace cli
