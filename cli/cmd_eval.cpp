@@ -33,6 +33,7 @@ struct EvalArgs {
   std::string scene, techniques, filters, biases, sizes, size = "1280x720", out = "eval";
   int threads = -1;
   int near_radius = 2;
+  std::optional<bool> cull_front;  // --cull-front / --no-cull-front for every combination
 };
 
 // One point of the sweep; an unset field keeps each light's own setting.
@@ -202,6 +203,7 @@ int run_eval(const EvalArgs& a) {
   frame::FrameConfig base;
   base.width = size.width, base.height = size.height;
   base.export_maps = false;
+  base.cull_front = a.cull_front;
   reference::ScoreOptions options;
   options.near_radius = a.near_radius;
 
@@ -265,6 +267,8 @@ Command add_eval_command(CLI::App& parent) {
   app->add_option("--sizes", args->sizes, "Comma-separated shadow map sides, 16..16384 (default: each light's own)");
   app->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (default 1280x720)");
   app->add_option("--threads", args->threads, "Worker threads (0: inline; default: all cores)");
+  app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
+  app->add_flag_callback("--no-cull-front", [args] { args->cull_front = false; }, "Render front faces into the maps");
   app->add_option("--near-radius", args->near_radius, "Pixels from an exact shadow boundary counted as near it (default 2)");
   app->add_option("--out", args->out, "Output directory for eval.csv, eval.json and the error maps (default eval)");
   return {app, [args] { return run_eval(*args); }};

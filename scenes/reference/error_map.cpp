@@ -13,8 +13,9 @@ raster::ColorTarget error_map(const raster::ColorTarget& frame, const std::vecto
   for (int y = 0; y < frame.height(); ++y)
     for (int x = 0; x < frame.width(); ++x) {
       const uint8_t e = errors[size_t(y) * size_t(frame.width()) + size_t(x)];
-      glm::vec4 c = frame.read(x, y) * 0.5f;
-      c.a = 1.0f;
+      const glm::vec4 f = frame.read(x, y);
+      const float grey = 0.4f * (0.2126f * f.r + 0.7152f * f.g + 0.0722f * f.b);
+      glm::vec4 c(grey, grey, grey, 1.0f);
       if (e) c = glm::vec4((e & kFalseShadowed) ? 1.0f : 0.0f, 0.0f, (e & kFalseLit) ? 1.0f : 0.0f, 1.0f);
       out.write(x, y, c);
     }

@@ -1,5 +1,5 @@
-// The error map of a scored frame: the frame at half brightness, false-shadowed pixels red, false-lit pixels blue
-// (magenta where one light is each). Written as a PNG next to the report (`shadowlab eval`).
+// The error map of a scored frame: the frame in grey at 40 % of its luminance, false-shadowed pixels red, false-lit
+// pixels blue (magenta where one light is each). Written as a PNG next to the report (`shadowlab eval`).
 #pragma once
 #include <cstdint>
 #include <vector>
