@@ -107,7 +107,7 @@ CliError as_cli_error(const frame::FrameError& e) {
 
 // One row: a combination's score for one light.
 nlohmann::json row_json(const scenes::Scene& scene, const Combination& c, size_t light,
-                        const reference::LightScore& s, const frame::FrameStats& stats) {
+                        const reference::LightScore& s, const frame::FrameStats& stats, double score_ms) {
   auto pct = [&](size_t n) { return s.percent(n); };
   return {{"combination", c.label()},
           {"technique", c.technique ? std::string(tech::info(*c.technique).name) : std::string("scene")},
@@ -129,7 +129,8 @@ nlohmann::json row_json(const scenes::Scene& scene, const Combination& c, size_t
           {"largest_false_lit_group", s.largest_false_lit_group},
           {"longest_false_lit_run", s.longest_false_lit_run},
           {"map_pass_ms", stats.shadow_ms},
-          {"camera_pass_ms", stats.camera_ms}};
+          {"camera_pass_ms", stats.camera_ms},
+          {"score_ms", score_ms}};
 }
 
 const char* const kColumns[] = {"combination", "technique", "filter", "bias", "map_size", "light", "light_name",
@@ -137,7 +138,7 @@ const char* const kColumns[] = {"combination", "technique", "filter", "bias", "m
                                 "false_shadowed_elsewhere_pct", "false_lit_pct", "false_lit_near_pct",
                                 "false_lit_elsewhere_pct", "false_shadowed_pixels", "false_lit_pixels",
                                 "mean_abs_error", "largest_false_lit_group", "longest_false_lit_run", "map_pass_ms",
-                                "camera_pass_ms"};
+                                "camera_pass_ms", "score_ms"};
 
 std::string csv(const nlohmann::json& rows) {
   std::string out;
@@ -224,7 +225,7 @@ int run_eval(const EvalArgs& a) {
       config.technique = c.technique, config.filter = c.filter, config.bias = c.bias, config.map_size = c.map_size;
       const reference::ScoredFrame sf = reference::score_config(scene, config, renderer, ref, options);
       for (size_t l = 0; l < sf.score.lights.size(); ++l) {
-        rows.push_back(row_json(scene, c, l, sf.score.lights[l], sf.frame.stats));
+        rows.push_back(row_json(scene, c, l, sf.score.lights[l], sf.frame.stats, sf.score_ms));
         const reference::LightScore& s = sf.score.lights[l];
         std::printf("%s light%zu: false-shadowed %.3f%% (near %.3f%%), false-lit %.3f%% (near %.3f%%), mean |S-V| %.4f\n",
                     c.label().c_str(), l, s.percent(s.false_shadowed()), s.percent(s.false_shadowed_near),

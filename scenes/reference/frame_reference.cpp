@@ -30,8 +30,10 @@ ScoredFrame score_config(const scenes::Scene& scene, frame::FrameConfig config, 
   frame::Frame f = frame::render_frame(scene, config, renderer);
   if (f.surface->covered != ref.shadows_off.surface->covered)
     throw ReferenceError("reference: the frame covers other pixels than the reference (another size or camera)");
+  const auto t0 = std::chrono::steady_clock::now();
   FrameScore s = score_frame(*f.surface, ref.exact, options);
-  return ScoredFrame{std::move(f), std::move(s)};
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return ScoredFrame{std::move(f), std::move(s), ms};
 }
 
 }  // namespace reference

@@ -26,6 +26,7 @@ FrameReference reference_for(const scenes::Scene& scene, frame::FrameConfig conf
 struct ScoredFrame {
   frame::Frame frame;  // with its surface record
   FrameScore score;
+  double score_ms = 0.0;  // scoring alone (the frame's own times are in frame.stats)
 };
 
 // Renders `config` (its surface record switched on) and scores it. Throws frame::FrameError for a bad setting,
