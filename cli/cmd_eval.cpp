@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.h"
+#include "cli/eval_report.h"
 #include "raster/renderer.h"
 #include "scenes/frame/frame.h"
 #include "scenes/io/atomic_write.h"
@@ -34,6 +35,7 @@ struct EvalArgs {
   int threads = -1;
   int near_radius = 2;
   std::optional<bool> cull_front;  // --cull-front / --no-cull-front for every combination
+  std::string shard;               // --shard I/N: only combinations K with K mod N = I
 };
 
 // One point of the sweep; an unset field keeps each light's own setting.
@@ -133,43 +135,6 @@ nlohmann::json row_json(const scenes::Scene& scene, const Combination& c, size_t
           {"score_ms", score_ms}};
 }
 
-const char* const kColumns[] = {"combination", "technique", "filter", "bias", "map_size", "light", "light_name",
-                                "scored_pixels", "false_shadowed_pct", "false_shadowed_near_pct",
-                                "false_shadowed_elsewhere_pct", "false_lit_pct", "false_lit_near_pct",
-                                "false_lit_elsewhere_pct", "false_shadowed_pixels", "false_lit_pixels",
-                                "mean_abs_error", "largest_false_lit_group", "longest_false_lit_run", "map_pass_ms",
-                                "camera_pass_ms", "score_ms"};
-
-std::string csv(const nlohmann::json& rows) {
-  std::string out;
-  for (const char* c : kColumns) out += std::string(out.empty() ? "" : ",") + c;
-  out += "\n";
-  for (const auto& r : rows) {
-    std::string line;
-    for (const char* c : kColumns) {
-      const auto& v = r.at(c);
-      std::string cell = v.is_string() ? v.get<std::string>() : v.dump();
-      if (cell.find_first_of(",\"\n") != std::string::npos) {  // RFC 4180 quoting
-        std::string q = "\"";
-        for (char ch : cell) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-        cell = q + "\"";
-      }
-      line += (line.empty() && c == kColumns[0] ? "" : ",") + cell;
-    }
-    out += line + "\n";
-  }
-  return out;
-}
-
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  scenes::io::write_atomically(path, [&](const std::filesystem::path& tmp) {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    f.close();
-    if (!f) throw scenes::io::IoError(tmp, "cannot write");
-  });
-}
-
 int run_eval(const EvalArgs& a) {
   const Size2 size = parse_size(a.size, "--size");
   const auto techniques = parse_names<tech::Technique>(a.techniques, "--techniques", "technique",
@@ -193,11 +158,13 @@ int run_eval(const EvalArgs& a) {
     throw CliError("--out", a.out + " exists and is not a directory");
   check_output_dir(a.out, "--out");  // the folder it goes in must exist; it is created itself
 
-  std::vector<Combination> combos;
+  const Shard shard = parse_shard(a.shard, "--shard");
+  std::vector<Combination> combos;  // the whole sweep, in a fixed order; this run takes its shard
   for (const auto& t : techniques)
     for (const auto& f : filters)
       for (const auto& b : biases)
         for (const auto& s : sizes) combos.push_back({t, f, b, s});
+  const size_t sweep_size = combos.size();
 
   const scenes::Scene scene = load_scene_or_builtin(a.scene);
   raster::Renderer renderer(a.threads);
@@ -219,6 +186,7 @@ int run_eval(const EvalArgs& a) {
     nlohmann::json rows = nlohmann::json::array();
     std::vector<std::pair<std::string, raster::ColorTarget>> maps;
     for (size_t k = 0; k < combos.size(); ++k) {
+      if (k % shard.count != shard.index) continue;
       const Combination& c = combos[k];
       progress.update("combination " + std::to_string(k + 1) + "/" + std::to_string(combos.size()) + ": " + c.label());
       frame::FrameConfig config = base;
@@ -226,6 +194,7 @@ int run_eval(const EvalArgs& a) {
       const reference::ScoredFrame sf = reference::score_config(scene, config, renderer, ref, options);
       for (size_t l = 0; l < sf.score.lights.size(); ++l) {
         rows.push_back(row_json(scene, c, l, sf.score.lights[l], sf.frame.stats, sf.score_ms));
+        rows.back()["index"] = k;
         const reference::LightScore& s = sf.score.lights[l];
         std::printf("%s light%zu: false-shadowed %.3f%% (near %.3f%%), false-lit %.3f%% (near %.3f%%), mean |S-V| %.4f\n",
                     c.label().c_str(), l, s.percent(s.false_shadowed()), s.percent(s.false_shadowed_near),
@@ -241,13 +210,13 @@ int run_eval(const EvalArgs& a) {
          {{"triangles", ref.triangles}, {"bvh_ms", ref.bvh_ms}, {"rays", ref.exact.rays}, {"rays_ms", ref.exact.ms},
           {"rays_per_second", rays_per_s}, {"epsilon", ref.exact.epsilon}}},
         {"scoring", {{"shadow_below", options.shadow_below}, {"near_radius_pixels", options.near_radius}}},
+        {"sweep", {{"combinations", sweep_size}, {"shard", shard.index}, {"shards", shard.count}}},
         {"results", rows}};
     std::filesystem::create_directories(a.out, ec);
     if (ec) throw CliError("--out", "cannot create directory " + a.out + " (" + ec.message() + ")");
     const std::filesystem::path dir(a.out);
     for (const auto& [label, image] : maps) scenes::io::write_png(dir / (label + ".png"), image);
-    write_text(dir / "eval.json", report.dump(2) + "\n");
-    write_text(dir / "eval.csv", csv(rows));
+    write_eval_report(dir, report);
   } catch (const frame::FrameError& e) {
     throw as_cli_error(e);
   }
@@ -271,6 +240,8 @@ Command add_eval_command(CLI::App& parent) {
   app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
   app->add_flag_callback("--no-cull-front", [args] { args->cull_front = false; }, "Render front faces into the maps");
   app->add_option("--near-radius", args->near_radius, "Pixels from an exact shadow boundary counted as near it (default 2)");
+  app->add_option("--shard", args->shard,
+                  "I/N: run only the combinations K with K mod N = I (0 <= I < N); merge the shards with eval-merge");
   app->add_option("--out", args->out, "Output directory for eval.csv, eval.json and the error maps (default eval)");
   return {app, [args] { return run_eval(*args); }};
 }

@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Help for every command");
   std::vector<cli::Command> commands = {cli::add_render_command(app), cli::add_shadowmap_command(app),
-                                        cli::add_inspect_command(app), cli::add_diff_command(app), cli::add_eval_command(app),
+                                        cli::add_inspect_command(app), cli::add_diff_command(app),
+                                        cli::add_eval_command(app),    cli::add_eval_merge_command(app),
                                         cli::add_list_command(app)};
   try {
     app.parse(argc, argv);

@@ -3,6 +3,7 @@
 // and bad input: one error line naming the option, exit code 2, no output written.
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -49,7 +50,7 @@ TEST_F(EvalCli, SweepWritesCsvJsonAndErrorMaps) {
   EXPECT_THAT(r.out, ::testing::HasSubstr("Mrays/s"));
   const std::string csv = testsupport::slurp(dir / "report" / "eval.csv");
   EXPECT_EQ(lines(csv), 1u + 4u);  // header, 2 filters x 2 sizes x 1 light
-  EXPECT_EQ(csv.rfind("combination,technique,filter,bias,map_size,light,", 0), 0u);
+  EXPECT_EQ(csv.rfind("index,combination,technique,filter,bias,map_size,light,", 0), 0u);
   const nlohmann::json j = nlohmann::json::parse(testsupport::slurp(dir / "report" / "eval.json"));
   ASSERT_EQ(j.at("results").size(), 4u);
   EXPECT_GT(j.at("reference").at("rays").get<size_t>(), 5000u);
@@ -80,6 +81,43 @@ TEST_F(EvalCli, BadInputWritesNothing) {
   expect_bad(base + "--techniques cube", "--techniques", "report");  // cube does not serve directional lights
   const Outcome r = shadowlab(dir, base + "--techniques cascades");
   EXPECT_THAT(r.err, ::testing::HasSubstr("technique cascades is not built yet"));
+}
+
+// The CSV without its timing columns (map_pass_ms, camera_pass_ms, score_ms: the last three).
+std::string without_times(const std::string& csv) {
+  std::stringstream in(csv);
+  std::string out;
+  for (std::string line; std::getline(in, line);) {
+    for (int k = 0; k < 3; ++k) line = line.substr(0, line.rfind(','));
+    out += line + "\n";
+  }
+  return out;
+}
+
+TEST_F(EvalCli, ShardsMergeIntoTheWholeSweep) {
+  const std::string sweep = "eval scene.json --techniques shadowmap --filters hard,pcf --biases slope,constant "
+                            "--sizes 128 --size 96x72 ";
+  ASSERT_EQ(shadowlab(dir, sweep + "--out whole").code, 0);
+  for (int i = 0; i < 3; ++i)
+    ASSERT_EQ(shadowlab(dir, sweep + "--shard " + std::to_string(i) + "/3 --out s" + std::to_string(i)).code, 0);
+  // Shard 0 holds combinations 0 and 3, shard 1 combination 1, shard 2 combination 2.
+  EXPECT_EQ(lines(testsupport::slurp(dir / "s0" / "eval.csv")), 3u);
+  EXPECT_EQ(lines(testsupport::slurp(dir / "s1" / "eval.csv")), 2u);
+  const Outcome m = shadowlab(dir, "eval-merge s2 s0 s1 --out merged");
+  ASSERT_EQ(m.code, 0) << m.err;
+  const std::string whole = testsupport::slurp(dir / "whole" / "eval.csv");
+  EXPECT_EQ(lines(whole), 5u);
+  EXPECT_EQ(without_times(testsupport::slurp(dir / "merged" / "eval.csv")), without_times(whole));
+  for (const auto& e : fs::directory_iterator(dir / "whole"))
+    EXPECT_TRUE(fs::exists(dir / "merged" / e.path().filename())) << e.path();
+  // A missing shard, a repeated one, another sweep's shard, a bad --shard: one line each, nothing written.
+  expect_bad("eval-merge s0 s1 --out m2", "s0/eval.json", "m2");
+  expect_bad("eval-merge s0 s1 s1 --out m2", "s1/eval.json", "m2");
+  expect_bad("eval-merge s0 s1 whole --out m2", "whole/eval.json", "m2");
+  expect_bad("eval-merge s0 s1 nowhere --out m2", "nowhere/eval.json", "m2");
+  expect_bad(sweep + "--shard 3/3 --out m2", "--shard", "m2");
+  expect_bad(sweep + "--shard 1 --out m2", "--shard", "m2");
+  expect_bad(sweep + "--shard -1/2 --out m2", "--shard", "m2");
 }
 
 TEST_F(EvalCli, RenderAovAlignsWithThePng) {
