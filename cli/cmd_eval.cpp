@@ -1,8 +1,9 @@
 // `shadowlab eval SCENE`: every combination of --techniques x --filters x --biases x --sizes rendered on the same
 // view and scored against the exact ray-cast shadow (scenes/reference/): per light, false-shadowed and false-lit
 // percentages of the lit-facing pixels near a boundary and elsewhere, mean |S - V|, and the map and camera pass
-// times. Writes DIR/eval.csv, DIR/eval.json and one error map per combination (DIR/<combination>.png). Every
-// option is checked and every combination rendered before the first file is written, so a failed run writes none.
+// times. Writes DIR/eval.csv, DIR/eval.json, DIR/eval.html and per combination a contact sheet, the frame beside
+// its error map (DIR/<combination>.png). Every option is checked and every combination rendered before the first
+// file is written, so a failed run writes none.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -200,7 +201,7 @@ int run_eval(const EvalArgs& a) {
                     c.label().c_str(), l, s.percent(s.false_shadowed()), s.percent(s.false_shadowed_near),
                     s.percent(s.false_lit()), s.percent(s.false_lit_near), s.mean_abs_error);
       }
-      maps.emplace_back(c.label(), reference::error_map(sf.frame.color, sf.score.errors));
+      maps.emplace_back(c.label(), reference::contact_sheet(sf.frame.color, sf.score.errors));
     }
 
     const nlohmann::json report = {

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "cli/cli_common.h"
+#include "cli/eval_html.h"
 #include "scenes/io/atomic_write.h"
 #include "scenes/io/io_error.h"
 
@@ -28,6 +29,8 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
 }
 
 }  // namespace
+
+std::span<const char* const> eval_columns() { return kColumns; }
 
 Shard parse_shard(const std::string& text, const std::string& option) {
   if (text.empty()) return {};
@@ -76,6 +79,7 @@ std::string eval_csv(const nlohmann::json& results) {
 void write_eval_report(const std::filesystem::path& dir, const nlohmann::json& report) {
   write_text(dir / "eval.json", report.dump(2) + "\n");
   write_text(dir / "eval.csv", eval_csv(report.at("results")));
+  write_text(dir / "eval.html", eval_html(report, dir));
 }
 
 }  // namespace cli

@@ -1,5 +1,6 @@
-// The error map of a scored frame: the frame in grey at 40 % of its luminance, false-shadowed pixels red, false-lit
-// pixels blue (magenta where one light is each). Written as a PNG next to the report (`shadowlab eval`).
+// The error map of a scored frame: the frame in grey at 15 % of its linear luminance, false-shadowed pixels red,
+// false-lit pixels blue (magenta where one light is each); and the contact sheet `shadowlab eval` writes per
+// combination, the frame beside its error map.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -10,5 +11,8 @@ namespace reference {
 
 // `errors`: FrameScore::errors (ErrorBits per pixel, GL row order), one per pixel of `frame`.
 raster::ColorTarget error_map(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors);
+
+// The contact sheet of one combination: the frame on the left, its error map on the right.
+raster::ColorTarget contact_sheet(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors);
 
 }  // namespace reference

@@ -63,6 +63,15 @@ TEST_F(EvalCli, SweepWritesCsvJsonAndErrorMaps) {
     if (row.at("filter") == "hard" && row.at("map_size") == 1024) large = e;
   }
   EXPECT_GT(small, large);  // a coarser map is further from the exact shadow
+  // The page: one table row per result (and the header), one embedded contact sheet per combination.
+  const std::string html = testsupport::slurp(dir / "report" / "eval.html");
+  size_t rows = 0, images = 0;
+  for (size_t at = html.find("<tr>"); at != std::string::npos; at = html.find("<tr>", at + 1)) ++rows;
+  for (size_t at = html.find("data:image/png;base64,"); at != std::string::npos;
+       at = html.find("data:image/png;base64,", at + 1))
+    ++images;
+  EXPECT_EQ(rows, 5u);
+  EXPECT_EQ(images, 4u);
   for (const char* name : {"shadowmap-hard-slope-128.png", "shadowmap-pcf-slope-128.png", "shadowmap-hard-slope-1024.png",
                            "shadowmap-pcf-slope-1024.png"})
     EXPECT_TRUE(fs::exists(dir / "report" / name)) << name;
