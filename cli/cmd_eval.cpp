@@ -1,9 +1,10 @@
 // `shadowlab eval SCENE`: every combination of --techniques x --filters x --biases x --sizes rendered on the same
 // view and scored against the exact ray-cast shadow (scenes/reference/): per light, false-shadowed and false-lit
-// percentages of the lit-facing pixels near a boundary and elsewhere, mean |S - V|, and the map and camera pass
-// times. Writes DIR/eval.csv, DIR/eval.json, DIR/eval.html and per combination a contact sheet, the frame beside
+// percentages of the lit-facing pixels near a boundary and elsewhere, mean |S - V|, the map and camera pass
+// times, and on request shimmer under a sub-pixel camera slide and a small light turn (shimmer.h). Writes DIR/eval.csv, DIR/eval.json, DIR/eval.html and per combination a contact sheet, the frame beside
 // its error map (DIR/<combination>.png). Every option is checked and every combination rendered before the first
 // file is written, so a failed run writes none.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +25,7 @@
 #include "scenes/io/png_frame.h"
 #include "scenes/reference/error_map.h"
 #include "scenes/reference/frame_reference.h"
+#include "scenes/reference/shimmer.h"
 #include "scenes/shadow_settings.h"
 
 namespace cli {
@@ -37,6 +39,8 @@ struct EvalArgs {
   int near_radius = 2;
   std::optional<bool> cull_front;  // --cull-front / --no-cull-front for every combination
   std::string shard;               // --shard I/N: only combinations K with K mod N = I
+  float shimmer_pixels = 0.0f;     // --shimmer-pixels: camera slide for the shimmer columns (0: not measured)
+  float shimmer_degrees = 0.0f;    // --shimmer-degrees: light turn for the shimmer columns (0: not measured)
 };
 
 // One point of the sweep; an unset field keeps each light's own setting.
@@ -154,6 +158,10 @@ int run_eval(const EvalArgs& a) {
   const auto sizes = parse_sizes(a.sizes);
   if (a.threads < -1) throw CliError("--threads", "expected 0 or more threads");
   if (a.near_radius < 0 || a.near_radius > 64) throw CliError("--near-radius", "expected 0..64 pixels");
+  if (!std::isfinite(a.shimmer_pixels) || std::fabs(a.shimmer_pixels) > 16.0f)
+    throw CliError("--shimmer-pixels", "expected a slide of at most 16 pixels");
+  if (!std::isfinite(a.shimmer_degrees) || std::fabs(a.shimmer_degrees) > 45.0f)
+    throw CliError("--shimmer-degrees", "expected a turn of at most 45 degrees");
   std::error_code ec;
   if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
     throw CliError("--out", a.out + " exists and is not a directory");
@@ -184,6 +192,19 @@ int run_eval(const EvalArgs& a) {
     std::printf("reference: %zu triangles, BVH %.1f ms; %zu rays in %.1f ms (%.2f Mrays/s); epsilon %g\n",
                 ref.triangles, ref.bvh_ms, ref.exact.rays, ref.exact.ms, rays_per_s / 1e6, double(ref.exact.epsilon));
 
+    // The moved scenes of the shimmer columns and their references, once for the whole sweep.
+    struct Moved {
+      std::string column;
+      scenes::Scene scene;
+      std::optional<reference::FrameReference> ref;
+    };
+    std::vector<Moved> motions;
+    if (a.shimmer_pixels != 0.0f)
+      motions.push_back({"shimmer_camera_pct", reference::moved(scene, base.camera, base.height, {a.shimmer_pixels, 0.0f}), {}});
+    if (a.shimmer_degrees != 0.0f)
+      motions.push_back({"shimmer_light_pct", reference::moved(scene, base.camera, base.height, {0.0f, a.shimmer_degrees}), {}});
+    for (Moved& m : motions) m.ref.emplace(reference::reference_for(m.scene, base, renderer));
+
     nlohmann::json rows = nlohmann::json::array();
     std::vector<std::pair<std::string, raster::ColorTarget>> maps;
     for (size_t k = 0; k < combos.size(); ++k) {
@@ -193,9 +214,18 @@ int run_eval(const EvalArgs& a) {
       frame::FrameConfig config = base;
       config.technique = c.technique, config.filter = c.filter, config.bias = c.bias, config.map_size = c.map_size;
       const reference::ScoredFrame sf = reference::score_config(scene, config, renderer, ref, options);
+      std::vector<std::vector<reference::LightShimmer>> shimmers;
+      for (const Moved& m : motions) {
+        const reference::ScoredFrame moved = reference::score_config(m.scene, config, renderer, *m.ref, options);
+        shimmers.push_back(reference::compare_frames(*sf.frame.surface, ref.exact, *moved.frame.surface, m.ref->exact,
+                                                     options.shadow_below));
+      }
       for (size_t l = 0; l < sf.score.lights.size(); ++l) {
         rows.push_back(row_json(scene, c, l, sf.score.lights[l], sf.frame.stats, sf.score_ms));
         rows.back()["index"] = k;
+        rows.back()["shimmer_camera_pct"] = nullptr;
+        rows.back()["shimmer_light_pct"] = nullptr;
+        for (size_t m = 0; m < motions.size(); ++m) rows.back()[motions[m].column] = shimmers[m][l].percent();
         const reference::LightScore& s = sf.score.lights[l];
         std::printf("%s light%zu: false-shadowed %.3f%% (near %.3f%%), false-lit %.3f%% (near %.3f%%), mean |S-V| %.4f\n",
                     c.label().c_str(), l, s.percent(s.false_shadowed()), s.percent(s.false_shadowed_near),
@@ -212,6 +242,7 @@ int run_eval(const EvalArgs& a) {
           {"rays_per_second", rays_per_s}, {"epsilon", ref.exact.epsilon}}},
         {"scoring", {{"shadow_below", options.shadow_below}, {"near_radius_pixels", options.near_radius}}},
         {"sweep", {{"combinations", sweep_size}, {"shard", shard.index}, {"shards", shard.count}}},
+        {"shimmer", {{"camera_pixels", a.shimmer_pixels}, {"light_degrees", a.shimmer_degrees}}},
         {"results", rows}};
     std::filesystem::create_directories(a.out, ec);
     if (ec) throw CliError("--out", "cannot create directory " + a.out + " (" + ec.message() + ")");
@@ -241,6 +272,10 @@ Command add_eval_command(CLI::App& parent) {
   app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
   app->add_flag_callback("--no-cull-front", [args] { args->cull_front = false; }, "Render front faces into the maps");
   app->add_option("--near-radius", args->near_radius, "Pixels from an exact shadow boundary counted as near it (default 2)");
+  app->add_option("--shimmer-pixels", args->shimmer_pixels,
+                  "Also measure shimmer: pixels flipping when the camera slides sideways by this many pixels");
+  app->add_option("--shimmer-degrees", args->shimmer_degrees,
+                  "Also measure shimmer: pixels flipping when every light turns by this many degrees");
   app->add_option("--shard", args->shard,
                   "I/N: run only the combinations K with K mod N = I (0 <= I < N); merge the shards with eval-merge");
   app->add_option("--out", args->out, "Output directory for eval.csv, eval.json and the error maps (default eval)");

@@ -45,6 +45,7 @@ std::string base64(const std::string& bytes) {
 }
 
 std::string cell(const nlohmann::json& v) {
+  if (v.is_null()) return "";
   if (v.is_string()) return escape(v.get<std::string>());
   if (v.is_number_float()) {
     std::ostringstream s;

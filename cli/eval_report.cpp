@@ -17,7 +17,7 @@ const char* const kColumns[] = {"index", "combination", "technique", "filter", "
                                 "false_shadowed_elsewhere_pct", "false_lit_pct", "false_lit_near_pct",
                                 "false_lit_elsewhere_pct", "false_shadowed_pixels", "false_lit_pixels",
                                 "mean_abs_error", "largest_false_lit_group", "longest_false_lit_run", "map_pass_ms",
-                                "camera_pass_ms", "score_ms"};
+                                "camera_pass_ms", "score_ms", "shimmer_camera_pct", "shimmer_light_pct"};
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
   scenes::io::write_atomically(path, [&](const std::filesystem::path& tmp) {
@@ -62,7 +62,7 @@ std::string eval_csv(const nlohmann::json& results) {
     bool first = true;
     for (const char* c : kColumns) {
       const auto& v = r.at(c);
-      std::string cell = v.is_string() ? v.get<std::string>() : v.dump();
+      std::string cell = v.is_string() ? v.get<std::string>() : v.is_null() ? std::string() : v.dump();
       if (cell.find_first_of(",\"\n") != std::string::npos) {  // RFC 4180 quoting
         std::string q = "\"";
         for (char ch : cell) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);

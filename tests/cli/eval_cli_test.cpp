@@ -92,12 +92,13 @@ TEST_F(EvalCli, BadInputWritesNothing) {
   EXPECT_THAT(r.err, ::testing::HasSubstr("technique cascades is not built yet"));
 }
 
-// The CSV without its timing columns (map_pass_ms, camera_pass_ms, score_ms: the last three).
+// The CSV without its last five columns: the times (map_pass_ms, camera_pass_ms, score_ms) and the shimmer
+// columns, empty here.
 std::string without_times(const std::string& csv) {
   std::stringstream in(csv);
   std::string out;
   for (std::string line; std::getline(in, line);) {
-    for (int k = 0; k < 3; ++k) line = line.substr(0, line.rfind(','));
+    for (int k = 0; k < 5; ++k) line = line.substr(0, line.rfind(','));
     out += line + "\n";
   }
   return out;
@@ -127,6 +128,22 @@ TEST_F(EvalCli, ShardsMergeIntoTheWholeSweep) {
   expect_bad(sweep + "--shard 3/3 --out m2", "--shard", "m2");
   expect_bad(sweep + "--shard 1 --out m2", "--shard", "m2");
   expect_bad(sweep + "--shard -1/2 --out m2", "--shard", "m2");
+}
+
+TEST_F(EvalCli, ShimmerColumnsOnRequest) {
+  const Outcome r = shadowlab(dir, "eval scene.json --techniques shadowmap --sizes 128,2048 --size 160x120 "
+                                   "--shimmer-pixels 0.5 --shimmer-degrees 1 --out report");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(testsupport::slurp(dir / "report" / "eval.json"));
+  ASSERT_EQ(j.at("results").size(), 2u);
+  for (const auto& row : j.at("results")) {
+    EXPECT_TRUE(row.at("shimmer_camera_pct").is_number()) << row;
+    EXPECT_TRUE(row.at("shimmer_light_pct").is_number()) << row;
+    EXPECT_GE(row.at("shimmer_light_pct").get<double>(), 0.0);
+  }
+  EXPECT_EQ(j.at("shimmer").at("light_degrees").get<double>(), 1.0);
+  expect_bad("eval scene.json --size 32x24 --shimmer-degrees 90 --out r2", "--shimmer-degrees", "r2");
+  expect_bad("eval scene.json --size 32x24 --shimmer-pixels nan --out r2", "--shimmer-pixels", "r2");
 }
 
 TEST_F(EvalCli, RenderAovAlignsWithThePng) {
