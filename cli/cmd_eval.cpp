@@ -1,7 +1,8 @@
 // `shadowlab eval SCENE`: every combination of --techniques x --filters x --biases x --sizes rendered on the same
 // view and scored against the exact ray-cast shadow (scenes/reference/): per light, false-shadowed and false-lit
 // percentages of the lit-facing pixels near a boundary and elsewhere, mean |S - V|, the map and camera pass
-// times, and on request shimmer under a sub-pixel camera slide and a small light turn (shimmer.h). Writes DIR/eval.csv, DIR/eval.json, DIR/eval.html and per combination a contact sheet, the frame beside
+// times, the aliasing measure where the technique has one (frame/aliasing.h), and on request shimmer under a
+// sub-pixel camera slide and a small light turn (shimmer.h). Writes DIR/eval.csv, DIR/eval.json, DIR/eval.html and per combination a contact sheet, the frame beside
 // its error map (DIR/<combination>.png). Every option is checked and every combination rendered before the first
 // file is written, so a failed run writes none.
 #include <cmath>
@@ -213,6 +214,7 @@ int run_eval(const EvalArgs& a) {
       progress.update("combination " + std::to_string(k + 1) + "/" + std::to_string(combos.size()) + ": " + c.label());
       frame::FrameConfig config = base;
       config.technique = c.technique, config.filter = c.filter, config.bias = c.bias, config.map_size = c.map_size;
+      config.aliasing = true;  // measured where the technique has a measure (frame/aliasing.h)
       const reference::ScoredFrame sf = reference::score_config(scene, config, renderer, ref, options);
       std::vector<std::vector<reference::LightShimmer>> shimmers;
       for (const Moved& m : motions) {
@@ -226,12 +228,21 @@ int run_eval(const EvalArgs& a) {
         rows.back()["shimmer_camera_pct"] = nullptr;
         rows.back()["shimmer_light_pct"] = nullptr;
         for (size_t m = 0; m < motions.size(); ++m) rows.back()[motions[m].column] = shimmers[m][l].percent();
+        const frame::AliasingImage* al = l < sf.frame.aliasing.size() ? &sf.frame.aliasing[l] : nullptr;
+        const bool measured = al && al->measured > 0;
+        rows.back()["aliasing_max"] = measured ? nlohmann::json(al->max) : nlohmann::json(nullptr);
+        rows.back()["aliasing_p95"] = measured ? nlohmann::json(al->p95) : nlohmann::json(nullptr);
+        rows.back()["aliasing_mean"] = measured ? nlohmann::json(al->mean) : nlohmann::json(nullptr);
         const reference::LightScore& s = sf.score.lights[l];
         std::printf("%s light%zu: false-shadowed %.3f%% (near %.3f%%), false-lit %.3f%% (near %.3f%%), mean |S-V| %.4f\n",
                     c.label().c_str(), l, s.percent(s.false_shadowed()), s.percent(s.false_shadowed_near),
                     s.percent(s.false_lit()), s.percent(s.false_lit_near), s.mean_abs_error);
       }
-      maps.emplace_back(c.label(), reference::contact_sheet(sf.frame.color, sf.score.errors));
+      // The sheet shows the first light's aliasing heat map where it was measured.
+      std::optional<raster::ColorTarget> heat;
+      if (!sf.frame.aliasing.empty() && sf.frame.aliasing[0].measured > 0)
+        heat.emplace(frame::aliasing_heat_map(sf.frame.aliasing[0]));
+      maps.emplace_back(c.label(), reference::contact_sheet(sf.frame.color, sf.score.errors, heat ? &*heat : nullptr));
     }
 
     const nlohmann::json report = {

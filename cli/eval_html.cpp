@@ -107,8 +107,9 @@ std::string eval_html(const nlohmann::json& report, const std::filesystem::path&
     if (!in) throw CliError(png.string(), "cannot be read for the HTML page");
     std::ostringstream bytes;
     bytes << in.rdbuf();
-    h << "<figure><figcaption>" << escape(label) << " (frame | error map)</figcaption><img alt=\"" << escape(label)
-      << "\" src=\"data:image/png;base64," << base64(bytes.str()) << "\"></figure>\n";
+    h << "<figure><figcaption>" << escape(label)
+      << " (frame | error map | the first light's aliasing heat map where measured)</figcaption><img alt=\""
+      << escape(label) << "\" src=\"data:image/png;base64," << base64(bytes.str()) << "\"></figure>\n";
   }
   h << kSortScript << "\n</body></html>\n";
   return h.str();

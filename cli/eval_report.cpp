@@ -17,7 +17,8 @@ const char* const kColumns[] = {"index", "combination", "technique", "filter", "
                                 "false_shadowed_elsewhere_pct", "false_lit_pct", "false_lit_near_pct",
                                 "false_lit_elsewhere_pct", "false_shadowed_pixels", "false_lit_pixels",
                                 "mean_abs_error", "largest_false_lit_group", "longest_false_lit_run", "map_pass_ms",
-                                "camera_pass_ms", "score_ms", "shimmer_camera_pct", "shimmer_light_pct"};
+                                "camera_pass_ms", "score_ms", "shimmer_camera_pct", "shimmer_light_pct",
+                                "aliasing_max", "aliasing_p95", "aliasing_mean"};
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
   scenes::io::write_atomically(path, [&](const std::filesystem::path& tmp) {

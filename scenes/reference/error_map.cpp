@@ -25,14 +25,18 @@ raster::ColorTarget error_map(const raster::ColorTarget& frame, const std::vecto
   return out;
 }
 
-raster::ColorTarget contact_sheet(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors) {
+raster::ColorTarget contact_sheet(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors,
+                                  const raster::ColorTarget* extra) {
   const raster::ColorTarget map = error_map(frame, errors);
+  if (extra && (extra->width() != frame.width() || extra->height() != frame.height()))
+    throw ReferenceError("reference: the contact sheet's third image differs in size from the frame");
   const int w = frame.width();
-  raster::ColorTarget out(2 * w, frame.height(), raster::ColorFormat::rgba8);
+  raster::ColorTarget out((extra ? 3 : 2) * w, frame.height(), raster::ColorFormat::rgba8);
   for (int y = 0; y < frame.height(); ++y)
     for (int x = 0; x < w; ++x) {
       out.write(x, y, frame.read(x, y));
       out.write(w + x, y, map.read(x, y));
+      if (extra) out.write(2 * w + x, y, extra->read(x, y));
     }
   return out;
 }

@@ -12,7 +12,9 @@ namespace reference {
 // `errors`: FrameScore::errors (ErrorBits per pixel, GL row order), one per pixel of `frame`.
 raster::ColorTarget error_map(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors);
 
-// The contact sheet of one combination: the frame on the left, its error map on the right.
-raster::ColorTarget contact_sheet(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors);
+// The contact sheet of one combination: the frame on the left, its error map beside it, then `extra` when given
+// (an aliasing heat map of the same size).
+raster::ColorTarget contact_sheet(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors,
+                                  const raster::ColorTarget* extra = nullptr);
 
 }  // namespace reference

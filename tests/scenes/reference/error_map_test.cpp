@@ -37,6 +37,13 @@ TEST(ErrorMap, ContactSheetIsFrameThenMap) {
   EXPECT_EQ(s.read(1, 1), glm::vec4(0.0f, 1.0f, 0.0f, 1.0f));
   EXPECT_EQ(s.read(4, 1), glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
   EXPECT_LT(s.read(3, 0).g, 0.2f);
+  raster::ColorTarget heat(3, 2, raster::ColorFormat::rgba8);
+  heat.clear(glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
+  const raster::ColorTarget three = reference::contact_sheet(frame, errors, &heat);
+  ASSERT_EQ(three.width(), 9);
+  EXPECT_EQ(three.read(7, 0), glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
+  const raster::ColorTarget small(2, 2, raster::ColorFormat::rgba8);
+  EXPECT_THROW(reference::contact_sheet(frame, errors, &small), reference::ReferenceError);
 }
 
 }  // namespace
