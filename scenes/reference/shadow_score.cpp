@@ -96,9 +96,13 @@ FrameScore score_frame(const frame::SurfaceRecord& r, const ExactVisibility& e, 
     for (size_t p = 0; p < r.pixels(); ++p) {
       const size_t i = p * L + l;
       if (!r.covered[p] || !r.lit_facing[i]) continue;
+      if (!e.reached[i]) {
+        ++s.terminator;
+        continue;
+      }
       ++s.scored;
       const float S = r.visibility[i];
-      const bool exact_lit = e.reached[i] && e.visible[i];
+      const bool exact_lit = e.visible[i];
       abs_sum += std::fabs(double(S) - (exact_lit ? 1.0 : 0.0));
       const bool shadowed = S < o.shadow_below;
       if (shadowed && exact_lit) {
