@@ -125,7 +125,7 @@ nlohmann::json row_json(const scenes::Scene& scene, const Combination& c, size_t
           {"light", light},
           {"light_name", scene.lights[light].name},
           {"scored_pixels", s.scored},
-          {"terminator_pixels", s.terminator},
+          {"unreached_pixels", s.unreached},
           {"false_shadowed_pct", pct(s.false_shadowed())},
           {"false_shadowed_near_pct", pct(s.false_shadowed_near)},
           {"false_shadowed_elsewhere_pct", pct(s.false_shadowed_elsewhere)},

@@ -97,7 +97,7 @@ FrameScore score_frame(const frame::SurfaceRecord& r, const ExactVisibility& e, 
       const size_t i = p * L + l;
       if (!r.covered[p] || !r.lit_facing[i]) continue;
       if (!e.reached[i]) {
-        ++s.terminator;
+        ++s.unreached;
         continue;
       }
       ++s.scored;

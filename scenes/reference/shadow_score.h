@@ -1,10 +1,11 @@
 // A technique's shadow scored against the exact one, light by light, over the lit-facing pixels: those whose
-// technique was asked (SurfaceRecord::lit_facing) and whose triangle itself faces the light (the reference
-// reached them). Pixels where the smooth shading normal faces the light but the flat triangle does not (the
-// terminator of a tessellated curve) are in shadow for the exact test whatever the technique does; they are
-// counted apart (`terminator`), not scored. A pixel is in shadow for the technique when its factor S is
-// below 0.5. False-shadowed: S < 0.5 where the ray reached the light (acne, over-darkening); false-lit: S >= 0.5
-// where it did not (leaks, peter-panning). Each is split into pixels near a boundary of the exact image and
+// technique was asked (SurfaceRecord::lit_facing) and that the reference's light reaches (ExactVisibility::
+// reached). The others are unlit for the exact test whatever the technique does, and counted apart (`unreached`),
+// not scored: the terminator of a tessellated curve, where the smooth shading normal faces the light and the flat
+// triangle does not, and the back half-space of a hemispherical light, which the shading lights as a point light.
+// A pixel is in shadow for the technique when its factor S is below 0.5. False-shadowed: S < 0.5 where the ray
+// reached the light unblocked (acne, over-darkening); false-lit: S >= 0.5 where it was blocked (leaks,
+// peter-panning). Each is split into pixels near a boundary of the exact image and
 // elsewhere: a boundary pixel has a 4-neighbour whose exact lighting (reached and unoccluded) differs, or whose
 // geometric normal turns by more than 30° (a crease or a contact between two surfaces); "near" is within
 // `near_radius` pixels of one (Chebyshev distance).
@@ -24,7 +25,7 @@ struct ScoreOptions {
 
 struct LightScore {
   size_t scored = 0;      // lit-facing pixels
-  size_t terminator = 0;  // asked but on a triangle facing away from the light: not scored
+  size_t unreached = 0;   // asked, but the exact light does not reach them: not scored
   size_t false_shadowed_near = 0, false_shadowed_elsewhere = 0;
   size_t false_lit_near = 0, false_lit_elsewhere = 0;
   double mean_abs_error = 0.0;  // mean |S − V| over the scored pixels (V: 1 visible, 0 not)

@@ -59,11 +59,11 @@ TEST(ShadowScore, OnlyLitFacingCoveredPixelsCount) {
   c.record.covered[c.record.index(0, 0)] = 0;
   c.record.lit_facing[c.record.index(1, 0)] = 0;
   c.technique(1, 0, 0.0f);  // not asked: ignored
-  c.exact.reached[c.record.index(2, 0)] = 0;  // asked, but its triangle faces away: a terminator pixel
+  c.exact.reached[c.record.index(2, 0)] = 0;  // asked, but its triangle faces away: unreached
   c.exact.visible[c.record.index(2, 0)] = 0;
   const reference::LightScore l = reference::score_frame(c.record, c.exact).lights[0];
   EXPECT_EQ(l.scored, 13u);
-  EXPECT_EQ(l.terminator, 1u);
+  EXPECT_EQ(l.unreached, 1u);
   EXPECT_EQ(l.false_shadowed(), 0u);
   EXPECT_EQ(l.false_lit(), 0u);
 }
