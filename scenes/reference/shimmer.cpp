@@ -45,8 +45,9 @@ scenes::Scene moved(const scenes::Scene& scene, size_t camera, int frame_height,
         if (glm::length(axis) < 1e-3f) axis = glm::cross(l.direction, glm::vec3(1.0f, 0.0f, 0.0f));
         l.direction = glm::normalize(rotate(l.direction, motion.light_degrees, axis));
       } else {
-        l.position = centre + rotate(l.position - centre, motion.light_degrees, glm::vec3(0.0f, 1.0f, 0.0f));
-        l.direction = glm::normalize(rotate(l.direction, motion.light_degrees, glm::vec3(0.0f, 1.0f, 0.0f)));
+        // About the horizontal x axis: a light above the centre (the usual ceiling lamp) moves too.
+        l.position = centre + rotate(l.position - centre, motion.light_degrees, glm::vec3(1.0f, 0.0f, 0.0f));
+        l.direction = glm::normalize(rotate(l.direction, motion.light_degrees, glm::vec3(1.0f, 0.0f, 0.0f)));
       }
     }
   }

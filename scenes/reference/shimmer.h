@@ -1,8 +1,8 @@
 // Temporal stability: how many pixels change between shadowed and lit when the view or the light moves a little,
 // where the exact shadow does not change. Two frames are rendered and ray-cast: the configuration as given, and
 // the same scene with the camera slid sideways by a fraction of a pixel, or with the light turned by a small angle
-// (directional and spot: the direction about a perpendicular axis; point and hemispherical: the position about
-// the vertical axis through the scene's centre). A pixel shimmers when it is lit-facing in both frames, the
+// (directional and spot: the direction about a perpendicular axis; point and hemispherical: the position and
+// direction about the x axis through the scene's centre). A pixel shimmers when it is lit-facing in both frames, the
 // technique's verdict (S < 0.5) differs between them and the exact one does not.
 #pragma once
 #include <vector>

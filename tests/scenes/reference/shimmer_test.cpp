@@ -8,6 +8,7 @@
 
 #include "scenes/camera_math.h"
 #include "scenes/reference/shimmer.h"
+#include "scenes/scene_queries.h"
 #include "tests/scenes/reference/analytic_scenes.h"
 #include "tests/support.h"
 
@@ -36,6 +37,14 @@ TEST(Shimmer, MotionsAreTheSizeAsked) {
   const float angle = glm::degrees(std::acos(glm::dot(turned.lights[0].direction, scene.lights[0].direction)));
   EXPECT_NEAR(angle, 0.5f, 0.01f);
   EXPECT_EQ(turned.cameras[0], scene.cameras[0]);
+  // A point light straight above the scene's centre moves by the angle about it.
+  scenes::Scene lamp = testsupport::scene_from_json(testsupport::kSphereUnderPointLight);
+  lamp.lights[0].position = scenes::scene_bounds(lamp).center() + glm::vec3(0.0f, 2.0f, 0.0f);
+  const scenes::Scene lamp_turned = reference::moved(lamp, 0, 240, {0.0f, 3.0f});
+  const glm::vec3 c = scenes::scene_bounds(lamp).center();
+  const float lamp_angle = glm::degrees(std::acos(glm::dot(glm::normalize(lamp.lights[0].position - c),
+                                                           glm::normalize(lamp_turned.lights[0].position - c))));
+  EXPECT_NEAR(lamp_angle, 3.0f, 0.01f);
 }
 
 TEST(Shimmer, NoMotionNoFlipsAndCoarseMapsShimmerMore) {
