@@ -31,6 +31,8 @@ Command add_render_command(CLI::App& parent);
 Command add_shadowmap_command(CLI::App& parent);
 Command add_inspect_command(CLI::App& parent);
 Command add_diff_command(CLI::App& parent);
+Command add_eval_command(CLI::App& parent);
+Command add_eval_merge_command(CLI::App& parent);
 Command add_list_command(CLI::App& parent);
 
 struct Size2 {

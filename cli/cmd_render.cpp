@@ -1,6 +1,7 @@
 // `shadowlab render SCENE`: a whole frame through the scenes/frame library, written as a PNG, with every shadow
 // map as EXR on request and per-frame statistics with --stats. This file only turns arguments into a
 // frame::FrameConfig: the technique parameters' options come from the vocabulary's ParamSpec lists.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -12,6 +13,7 @@
 #include "raster/renderer.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/frame/frame.h"
+#include "scenes/io/exr_image.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/png_frame.h"
 #include "scenes/shadow_settings.h"
@@ -22,6 +24,7 @@ namespace {
 struct RenderArgs {
   std::string scene;
   std::string technique, filter, bias, depth_format, size = "1280x720", maps, out = "frame.png", aliasing;
+  std::string aov, aov_out;  // --aov position,normal,visibility,depth  --aov-out FILE.exr
   long long shadow_size = 0;
   CLI::Option* shadow_size_option = nullptr;  // given or not
   int threads = -1;
@@ -90,6 +93,29 @@ void check_name(const std::string& value, const std::string& option, const char*
                                ")");
 }
 
+// --aov's comma-separated channel names (every channel when only --aov-out is given); empty without either.
+std::vector<frame::AovChannel> parse_aov_list(const std::string& list, const std::string& out) {
+  if (list.empty() && out.empty()) return {};
+  if (out.empty()) throw CliError("--aov", "needs --aov-out FILE.exr to write the channels to");
+  if (lower_extension(out) != ".exr") throw CliError("--aov-out", "expected an .exr file name");
+  check_output_dir(out, "--aov-out");
+  std::vector<frame::AovChannel> channels;
+  if (list.empty()) {
+    for (size_t i = 0; i < std::size(frame::kAovNames); ++i) channels.push_back(frame::AovChannel(i));
+    return channels;
+  }
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t end = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, end - start);
+    const auto c = frame::parse_aov_channel(name);
+    if (!c) throw CliError("--aov", "unknown channel '" + name + "' (known: position, normal, visibility, depth)");
+    if (std::find(channels.begin(), channels.end(), *c) == channels.end()) channels.push_back(*c);
+    start = end + 1;
+  }
+  return channels;
+}
+
 int run_render(const RenderArgs& a) {
   const Size2 size = parse_size(a.size, "--size");
   check_name(a.technique, "--technique", "technique", scenes::parse_technique(a.technique).has_value(),
@@ -123,6 +149,7 @@ int run_render(const RenderArgs& a) {
     if (lower_extension(a.aliasing) != ".png") throw CliError("--aliasing", "expected a .png file name");
     check_output_dir(a.aliasing, "--aliasing");
   }
+  const std::vector<frame::AovChannel> aovs = parse_aov_list(a.aov, a.aov_out);
   if (!a.maps.empty()) {
     std::error_code ec;
     if (std::filesystem::exists(a.maps, ec) && !std::filesystem::is_directory(a.maps, ec))
@@ -150,6 +177,7 @@ int run_render(const RenderArgs& a) {
   config.params = a.params;
   config.export_maps = !a.maps.empty();  // projective maps become EXR records only when written
   config.aliasing = !a.aliasing.empty();
+  config.surface_record = !aovs.empty();
 
   raster::Renderer renderer(a.threads);
   Progress progress;
@@ -218,6 +246,7 @@ int run_render(const RenderArgs& a) {
       }
     }
     for (const auto& [file, heat] : heat_maps) scenes::io::write_png(batch, file, heat);
+    if (!aovs.empty()) scenes::io::write_exr_image(batch, a.aov_out, frame::aov_image(*result->surface, aovs));
     scenes::io::write_png(batch, a.out, result->color);
     batch.commit();
   } catch (...) {
@@ -258,6 +287,9 @@ Command add_render_command(CLI::App& parent) {
   add_value(app, "--offset-units", r.offset_units, "offset bias: glPolygonOffset units (4)");
   add_value(app, "--normal-offset", r.normal_offset, "normal bias: receiver moved along its normal, metres (0.02)");
   app->add_option("--maps", args->maps, "Also write every shadow map as DIR/<map name>.exr");
+  app->add_option("--aov", args->aov,
+                  "Per-pixel channels to write with --aov-out: position,normal,visibility,depth (default: all)");
+  app->add_option("--aov-out", args->aov_out, "Write the per-pixel channels as one multi-channel EXR (aligned with --out)");
   app->add_option("--depth-format", args->depth_format, "Depth format of every light's maps (see list)");
   // The technique parameters (vocabulary.h): one option each, flags with a --no- form.
   for (const shading::tech::ParamSpec* p : all_params()) {

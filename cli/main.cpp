@@ -12,6 +12,7 @@
 #include "raster/renderer.h"
 #include "raster/target.h"
 #include "scenes/io/io_error.h"
+#include "scenes/reference/occlusion_scene.h"
 #include "scenes/scene_error.h"
 
 namespace {
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
   app.set_help_all_flag("--help-all", "Help for every command");
   std::vector<cli::Command> commands = {cli::add_render_command(app), cli::add_shadowmap_command(app),
                                         cli::add_inspect_command(app), cli::add_diff_command(app),
+                                        cli::add_eval_command(app),    cli::add_eval_merge_command(app),
                                         cli::add_list_command(app)};
   try {
     app.parse(argc, argv);
@@ -55,6 +57,8 @@ int main(int argc, char** argv) {
   } catch (const scenes::SceneError& e) {
     return report(e.what());
   } catch (const scenes::io::IoError& e) {
+    return report(e.what());
+  } catch (const reference::ReferenceError& e) {
     return report(e.what());
   } catch (const raster::TargetSizeError& e) {
     return report(std::string("target size: ") + e.what());

@@ -13,6 +13,7 @@
 
 #include "raster/shader.h"
 #include "raster/simd/vec.h"
+#include "scenes/frame/surface_record.h"
 #include "shading/lighting.h"
 #include "shading/techniques/technique.h"
 
@@ -63,6 +64,7 @@ struct CameraShader {
 
   SurfaceUniforms u;
   std::span<const LightRecord> lights;  // owned by the frame, alive for the draw
+  SurfaceRecord* record = nullptr;       // optional per-pixel record (surface_record.h), owned by the frame
 
   glm::vec4 vertex(const Vertex& v, Varyings& out) const {
     const glm::vec4 w = u.model * glm::vec4(v.position, 1.0f);
@@ -75,10 +77,13 @@ struct CameraShader {
   // neither shaded nor looked up.
   void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const {
     Points<4> pts;
+    // The plane's normal from the quad's position differences (helper lanes are interpolated too).
+    const glm::vec3 dx = q.in[1].world - q.in[0].world, dy = q.in[2].world - q.in[0].world;
     for (int lane = 0; lane < 4; ++lane) {
       if (((q.live >> lane) & 1u) == 0) continue;  // helper lane: never written
       const glm::vec4& fc = q.frag_coord[size_t(lane)];
       pts.add(*this, q.in[size_t(lane)], q.front_facing, glm::vec2(fc.x, fc.y), lane);
+      if (record) pts.surface[pts.n - 1] = {dx, dy, fc.z};
     }
     shade(pts, [](const LightRecord& l, auto q, auto vis) { light_visibility(l, q, vis); });
     for (size_t i = 0; i < pts.n; ++i) out.color[size_t(pts.lane_of[i])] = glm::vec4(pts.color[i], 1.0f);
@@ -92,10 +97,17 @@ struct CameraShader {
     for (size_t k = 0; k < 6; ++k) q.in[k].store(in[k]);
     q.frag_x.store(fx), q.frag_y.store(fy);
     Points<8> pts;
+    alignas(32) float fz[8];
+    if (record) q.frag_z.store(fz);
+    auto world = [&](int lane) { return glm::vec3(in[0][lane], in[1][lane], in[2][lane]); };
     for (int lane = 0; lane < 8; ++lane) {
       if (((q.live >> lane) & 1u) == 0) continue;  // helper lane: never written
       const Varyings v{{in[0][lane], in[1][lane], in[2][lane]}, {in[3][lane], in[4][lane], in[5][lane]}};
       pts.add(*this, v, q.front_facing, glm::vec2(fx[lane], fy[lane]), lane);
+      if (record) {  // the lane's own quad (lanes b, b + 1, b + 4, b + 5), the same differences as fragment()
+        const int b = lane & 2;
+        pts.surface[pts.n - 1] = {world(b + 1) - world(b), world(b + 4) - world(b), fz[lane]};
+      }
     }
     shade(pts, [](const LightRecord& l, auto q, auto vis) { light_visibility_x8(l, q, vis); });
     alignas(32) float ch[4][8] = {};
@@ -113,6 +125,11 @@ struct CameraShader {
     std::array<shading::tech::ShadowQuery, N> q;
     std::array<glm::vec3, N> view, color;
     std::array<int, N> lane_of;
+    struct Surface {
+      glm::vec3 dx, dy;  // world position one pixel right and one up, minus the quad's first
+      float depth;       // window depth
+    };
+    std::array<Surface, N> surface;  // filled only when recording
     size_t n = 0;
     void add(const CameraShader& s, const Varyings& in, bool front_facing, glm::vec2 frag, int lane) {
       glm::vec3 nrm = glm::normalize(in.normal);
@@ -146,6 +163,43 @@ struct CameraShader {
         const size_t i = lit_of[k];
         pts.color[i] += vis[k] * (d[i].diffuse + d[i].specular * u.specular_color);
       }
+      if (record) record_light(pts, size_t(&l - lights.data()), std::span(lit_of.data(), m), std::span(vis.data(), m));
+    }
+    if (record) record_surface(pts);
+  }
+
+  // The pixel a point lies on (its centre is at integer + 0.5).
+  static size_t pixel_of(const SurfaceRecord& r, glm::vec2 frag) { return r.index(int(frag.x), int(frag.y)); }
+
+  template <size_t N>
+  void record_light(const Points<N>& pts, size_t light, std::span<const size_t> lit_of, std::span<const float> vis) const {
+    SurfaceRecord& r = *record;
+    for (size_t i = 0; i < pts.n; ++i) {
+      const size_t p = pixel_of(r, pts.q[i].frag) * r.lights + light;
+      r.lit_facing[p] = 0;
+      r.visibility[p] = 1.0f;
+    }
+    if (!u.receives_shadows) return;  // the light reaches these points but its technique is not asked
+    for (size_t k = 0; k < lit_of.size(); ++k) {
+      const size_t p = pixel_of(r, pts.q[lit_of[k]].frag) * r.lights + light;
+      r.lit_facing[p] = 1;
+      r.visibility[p] = vis[k];
+    }
+  }
+
+  template <size_t N>
+  void record_surface(const Points<N>& pts) const {
+    SurfaceRecord& r = *record;
+    for (size_t i = 0; i < pts.n; ++i) {
+      const size_t p = pixel_of(r, pts.q[i].frag);
+      const auto& s = pts.surface[i];
+      glm::vec3 n = glm::cross(s.dx, s.dy);  // screen x cross screen y: towards the viewer
+      const float len = glm::length(n);
+      n = len > 0.0f ? n / len : pts.q[i].n;  // a degenerate quad: the shading normal
+      r.covered[p] = 1;
+      r.position[p] = pts.q[i].p;
+      r.normal[p] = n;
+      r.depth[p] = s.depth;
     }
   }
 };

@@ -194,9 +194,13 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   depth.clear(1.0f);
   frame.color.clear(config.clear_color);
   std::vector<std::vector<CameraVertex>> mesh_vertices(scene.meshes.size());
+  frame.view_proj = view_proj;
+  frame.eye = camera.position;
+  if (config.surface_record) frame.surface.emplace(config.width, config.height, scene.lights.size());
   {
     CameraShader shader;
     shader.lights = records;
+    shader.record = frame.surface ? &*frame.surface : nullptr;
     shader.u.view_proj = view_proj;
     shader.u.eye = camera.position;
     for (size_t index = 0; index < scene.instances.size(); ++index) {

@@ -10,12 +10,15 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "raster/renderer.h"
 #include "raster/target.h"
 #include "scenes/frame/aliasing.h"
 #include "scenes/frame/frame_projective.h"
+#include "scenes/frame/surface_record.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/scene.h"
 #include "shading/techniques/technique.h"
@@ -53,6 +56,9 @@ struct FrameConfig {
   bool aliasing = false;        // measure each light's aliasing (Frame::aliasing, scenes/frame/aliasing.h)
   bool export_maps = true;      // keep what export_maps needs (projective: the per-caster maps)
   bool quad_fragments = false;  // camera pass on the quad path only (fragment()), for tests of the wide path
+  // Keep the camera pass's per-pixel record of the visible surface (Frame::surface, surface_record.h). Lights
+  // applied as receiver passes (projective) record visibility 1: their shadow is blended in afterwards.
+  bool surface_record = false;
 };
 
 struct FrameStats {
@@ -75,6 +81,9 @@ struct Frame {
   ProjectiveFrame projective;       // the per-caster projective maps
   FrameStats stats;
   std::vector<AliasingImage> aliasing;  // per scene light, with FrameConfig::aliasing
+  std::optional<SurfaceRecord> surface;  // with FrameConfig::surface_record
+  glm::mat4 view_proj{1.0f};             // the camera's projection · view
+  glm::vec3 eye{0.0f};                   // the camera's position
 };
 
 // Throws FrameError naming the field for a bad configuration or light setting. `cache` (optional) keeps

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Runs the sweeps behind docs/ground-truth-report.md: `shadowlab eval` on each built-in scene at 1280×720 with
+# shimmer (half a pixel, half a degree), one report folder per scene (eval.csv, eval.json, eval.html, contact
+# sheets). The projective scene is refused by eval (its shadow is blended in after the camera pass).
+#   docs/scripts/ground_truth_report.sh [path/to/shadowlab] [output folder]
+#   (defaults: build/cli/shadowlab, ground-truth-report)
+set -euo pipefail
+bin=${1:-build/cli/shadowlab}
+out=${2:-ground-truth-report}
+mkdir -p "$out"
+common=(--shimmer-pixels 0.5 --shimmer-degrees 0.5)
+directional=(--techniques shadowmap,cascades,lispsm,frustum-faces --filters hard,pcf --biases slope,normal
+             --sizes 1024,2048)
+omni=(--filters hard,pcf --biases slope,normal --sizes 512,1024)
+"$bin" eval tutorial "${directional[@]}" "${common[@]}" --out "$out/tutorial"
+"$bin" eval duel "${directional[@]}" "${common[@]}" --out "$out/duel"
+"$bin" eval tutorial-spot --techniques shadowmap --filters hard,pcf,poisson --biases constant,slope,offset,normal \
+    --sizes 512,1024,2048 "${common[@]}" --out "$out/tutorial-spot"
+"$bin" eval pyramid --techniques cube,paraboloid,pyramid "${omni[@]}" "${common[@]}" --out "$out/pyramid"
+"$bin" eval paraboloid --techniques cube,paraboloid "${omni[@]}" "${common[@]}" --out "$out/paraboloid"

@@ -1,0 +1,39 @@
+// The reference frame and the scoring of one configuration against it (see frame_reference.h).
+#include "scenes/reference/frame_reference.h"
+
+#include <chrono>
+
+#include "scenes/scene_queries.h"
+
+namespace reference {
+
+FrameReference reference_for(const scenes::Scene& scene, frame::FrameConfig config, raster::Renderer& renderer,
+                             float epsilon) {
+  frame::FrameConfig off;
+  off.width = config.width, off.height = config.height, off.camera = config.camera;
+  off.clear_color = config.clear_color;
+  off.technique = shading::tech::Technique::none;
+  off.surface_record = true;
+  off.export_maps = false;
+  frame::Frame f = frame::render_frame(scene, off, renderer);
+  const auto t0 = std::chrono::steady_clock::now();
+  const OcclusionScene occluders(scenes::flatten(scene, scenes::InstanceFilter::casters));
+  const double bvh_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  ExactVisibility exact = cast_shadow_rays(occluders, *f.surface, scene.lights,
+                                           epsilon < 0.0f ? default_epsilon(scene) : epsilon, renderer.pool());
+  return FrameReference{std::move(f), std::move(exact), occluders.triangles(), bvh_ms};
+}
+
+ScoredFrame score_config(const scenes::Scene& scene, frame::FrameConfig config, raster::Renderer& renderer,
+                         const FrameReference& ref, const ScoreOptions& options) {
+  config.surface_record = true;
+  frame::Frame f = frame::render_frame(scene, config, renderer);
+  if (f.surface->covered != ref.shadows_off.surface->covered)
+    throw ReferenceError("reference: the frame covers other pixels than the reference (another size or camera)");
+  const auto t0 = std::chrono::steady_clock::now();
+  FrameScore s = score_frame(*f.surface, ref.exact, options);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return ScoredFrame{std::move(f), std::move(s), ms};
+}
+
+}  // namespace reference

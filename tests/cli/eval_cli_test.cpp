@@ -1,0 +1,193 @@
+// End-to-end tests of `shadowlab eval` and `shadowlab render --aov`: the files a sweep writes (one CSV row and one
+// JSON result per combination and light, one error map per combination), the per-pixel EXR aligned with the PNG,
+// and bad input: one error line naming the option, exit code 2, no output written.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "scenes/io/exr_image.h"
+#include "shading/techniques/vocabulary.h"
+#include "tests/cli/cli_run.h"
+#include "tests/support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using testsupport::Outcome;
+using testsupport::shadowlab;
+
+// A floor and a box on it under the sun, a camera at an angle.
+const char* kScene = R"({"objects": [{"primitive": {"type": "plane", "size": [6, 6]}},
+  {"primitive": {"type": "box", "size": [1, 1, 1]}, "transform": {"translate": [0, 0.5, 0]}}],
+  "cameras": [{"position": [3, 5, 6], "target": [0, 0, 0]}],
+  "lights": [{"type": "directional", "direction": [-0.5, -1, -0.3]}]})";
+
+class EvalCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = testsupport::temp_dir(std::string("eval_cli_") +
+                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::ofstream(dir / "scene.json") << kScene;
+  }
+  void expect_bad(const std::string& args, const std::string& where, const std::string& out) {
+    testsupport::expect_bad_run(dir, args, where, out);
+    for (const auto& e : fs::directory_iterator(dir))
+      EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  }
+  fs::path dir;
+};
+
+size_t lines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
+
+TEST_F(EvalCli, SweepWritesCsvJsonAndErrorMaps) {
+  const Outcome r = shadowlab(dir, "eval scene.json --techniques shadowmap --filters hard,pcf --biases slope "
+                                   "--sizes 128,1024 --size 160x120 --out report");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("Mrays/s"));
+  const std::string csv = testsupport::slurp(dir / "report" / "eval.csv");
+  EXPECT_EQ(lines(csv), 1u + 4u);  // header, 2 filters x 2 sizes x 1 light
+  EXPECT_EQ(csv.rfind("index,combination,technique,filter,bias,map_size,light,", 0), 0u);
+  const nlohmann::json j = nlohmann::json::parse(testsupport::slurp(dir / "report" / "eval.json"));
+  ASSERT_EQ(j.at("results").size(), 4u);
+  EXPECT_GT(j.at("reference").at("rays").get<size_t>(), 5000u);
+  EXPECT_GT(j.at("reference").at("epsilon").get<double>(), 0.0);
+  double small = -1, large = -1;
+  for (const auto& row : j.at("results")) {
+    EXPECT_GT(row.at("scored_pixels").get<size_t>(), 5000u);
+    EXPECT_GT(row.at("aliasing_p95").get<double>(), 0.0);  // the classic map has the aliasing measure
+    const double e = row.at("false_shadowed_pct").get<double>() + row.at("false_lit_pct").get<double>();
+    if (row.at("filter") == "hard" && row.at("map_size") == 128) small = e;
+    if (row.at("filter") == "hard" && row.at("map_size") == 1024) large = e;
+  }
+  EXPECT_GT(small, large);  // a coarser map is further from the exact shadow
+  // The page: one table row per result (and the header), one embedded contact sheet per combination.
+  const std::string html = testsupport::slurp(dir / "report" / "eval.html");
+  size_t rows = 0, images = 0;
+  for (size_t at = html.find("<tr>"); at != std::string::npos; at = html.find("<tr>", at + 1)) ++rows;
+  for (size_t at = html.find("data:image/png;base64,"); at != std::string::npos;
+       at = html.find("data:image/png;base64,", at + 1))
+    ++images;
+  EXPECT_EQ(rows, 5u);
+  EXPECT_EQ(images, 4u);
+  for (const char* name : {"shadowmap-hard-slope-128.png", "shadowmap-pcf-slope-128.png", "shadowmap-hard-slope-1024.png",
+                           "shadowmap-pcf-slope-1024.png"})
+    EXPECT_TRUE(fs::exists(dir / "report" / name)) << name;
+}
+
+TEST_F(EvalCli, BadInputWritesNothing) {
+  const std::string base = "eval scene.json --size 64x48 --out report ";
+  expect_bad(base + "--techniques shadowmap,bogus", "--techniques", "report");
+  expect_bad(base + "--techniques projective", "--techniques", "report");
+  expect_bad(base + "--sizes 512,abc", "--sizes", "report");
+  expect_bad(base + "--sizes 8", "--sizes", "report");
+  expect_bad(base + "--sizes 512,", "--sizes", "report");
+  expect_bad(base + "--filters soft", "--filters", "report");
+  expect_bad(base + "--biases huge", "--biases", "report");
+  expect_bad(base + "--techniques cube", "--techniques", "report");  // cube does not serve directional lights
+  // Every technique the vocabulary lists but nobody has built yet is refused with the vocabulary's words.
+  for (const shading::tech::TechniqueInfo& t : shading::tech::kTechniques) {
+    if (t.built) continue;
+    const std::string name(t.name);
+    expect_bad(base + "--techniques shadowmap," + name, "--techniques", "report");
+    EXPECT_THAT(shadowlab(dir, base + "--techniques " + name).err,
+                ::testing::HasSubstr("technique " + name + " is not built yet"));
+  }
+}
+
+// The CSV without its last eight columns: the times (map_pass_ms, camera_pass_ms, score_ms), the shimmer columns
+// (empty here) and the aliasing measure (its timing-free values are compared through the JSON in other tests).
+std::string without_times(const std::string& csv) {
+  std::stringstream in(csv);
+  std::string out;
+  for (std::string line; std::getline(in, line);) {
+    for (int k = 0; k < 8; ++k) line = line.substr(0, line.rfind(','));
+    out += line + "\n";
+  }
+  return out;
+}
+
+TEST_F(EvalCli, ShardsMergeIntoTheWholeSweep) {
+  const std::string sweep = "eval scene.json --techniques shadowmap --filters hard,pcf --biases slope,constant "
+                            "--sizes 128 --size 96x72 ";
+  ASSERT_EQ(shadowlab(dir, sweep + "--out whole").code, 0);
+  for (int i = 0; i < 3; ++i)
+    ASSERT_EQ(shadowlab(dir, sweep + "--shard " + std::to_string(i) + "/3 --out s" + std::to_string(i)).code, 0);
+  // Shard 0 holds combinations 0 and 3, shard 1 combination 1, shard 2 combination 2.
+  EXPECT_EQ(lines(testsupport::slurp(dir / "s0" / "eval.csv")), 3u);
+  EXPECT_EQ(lines(testsupport::slurp(dir / "s1" / "eval.csv")), 2u);
+  const Outcome m = shadowlab(dir, "eval-merge s2 s0 s1 --out merged");
+  ASSERT_EQ(m.code, 0) << m.err;
+  const std::string whole = testsupport::slurp(dir / "whole" / "eval.csv");
+  EXPECT_EQ(lines(whole), 5u);
+  EXPECT_EQ(without_times(testsupport::slurp(dir / "merged" / "eval.csv")), without_times(whole));
+  for (const auto& e : fs::directory_iterator(dir / "whole"))
+    EXPECT_TRUE(fs::exists(dir / "merged" / e.path().filename())) << e.path();
+  // A missing shard, a repeated one, another sweep's shard, a bad --shard: one line each, nothing written.
+  expect_bad("eval-merge s0 s1 --out m2", "s0/eval.json", "m2");
+  expect_bad("eval-merge s0 s1 s1 --out m2", "s1/eval.json", "m2");
+  expect_bad("eval-merge s0 s1 whole --out m2", "whole/eval.json", "m2");
+  expect_bad("eval-merge s0 s1 nowhere --out m2", "nowhere/eval.json", "m2");
+  expect_bad(sweep + "--shard 3/3 --out m2", "--shard", "m2");
+  expect_bad(sweep + "--shard 1 --out m2", "--shard", "m2");
+  expect_bad(sweep + "--shard -1/2 --out m2", "--shard", "m2");
+}
+
+TEST_F(EvalCli, ShimmerColumnsOnRequest) {
+  const Outcome r = shadowlab(dir, "eval scene.json --techniques shadowmap --sizes 128,2048 --size 160x120 "
+                                   "--shimmer-pixels 0.5 --shimmer-degrees 1 --out report");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(testsupport::slurp(dir / "report" / "eval.json"));
+  ASSERT_EQ(j.at("results").size(), 2u);
+  for (const auto& row : j.at("results")) {
+    EXPECT_TRUE(row.at("shimmer_camera_pct").is_number()) << row;
+    EXPECT_TRUE(row.at("shimmer_light_pct").is_number()) << row;
+    EXPECT_GE(row.at("shimmer_light_pct").get<double>(), 0.0);
+  }
+  EXPECT_EQ(j.at("shimmer").at("light_degrees").get<double>(), 1.0);
+  expect_bad("eval scene.json --size 32x24 --shimmer-degrees 90 --out r2", "--shimmer-degrees", "r2");
+  expect_bad("eval scene.json --size 32x24 --shimmer-pixels nan --out r2", "--shimmer-pixels", "r2");
+}
+
+TEST_F(EvalCli, RenderAovAlignsWithThePng) {
+  const Outcome r = shadowlab(dir, "render scene.json --size 96x64 --out f.png --aov position,visibility,depth "
+                                   "--aov-out f.exr");
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_TRUE(fs::exists(dir / "f.png"));
+  const scenes::io::ExrImage img = scenes::io::read_exr_image(dir / "f.exr");
+  EXPECT_EQ(img.width, 96);
+  EXPECT_EQ(img.height, 64);
+  for (const char* c : {"P.X", "P.Y", "P.Z", "Z", "light0.V", "light0.facing", "A"})
+    EXPECT_NE(img.find(c), nullptr) << c;
+  EXPECT_EQ(img.find("N.X"), nullptr);
+  // Rows are stored in GL order after reading (row 0 the bottom), as in the PNG flipped: the camera looks down
+  // at the floor, so the lowest covered pixel of the middle column is nearer (smaller depth) than the highest.
+  const auto& z = img.find("Z")->values;
+  const auto& a = img.find("A")->values;
+  const auto& py = img.find("P.Y")->values;
+  int lowest = -1, highest = -1;
+  for (int y = 0; y < 64; ++y)
+    if (a[size_t(y) * 96 + 48] == 1.0f) {
+      if (lowest < 0) lowest = y;
+      highest = y;
+    }
+  ASSERT_GE(lowest, 0);
+  ASSERT_GT(highest, lowest + 10);
+  EXPECT_LT(z[size_t(lowest) * 96 + 48], z[size_t(highest) * 96 + 48]);
+  // The PNG's top row (file row 0) is the EXR's top row too: both show the sky above the floor's far edge.
+  EXPECT_LT(highest, 63);
+  EXPECT_EQ(a[size_t(63) * 96 + 48], 0.0f);
+  EXPECT_EQ(py[size_t(63) * 96 + 48], 0.0f);
+}
+
+TEST_F(EvalCli, RenderAovBadInput) {
+  expect_bad("render scene.json --size 32x32 --out f.png --aov position,colour --aov-out f.exr", "--aov", "f.exr");
+  expect_bad("render scene.json --size 32x32 --out f.png --aov depth", "--aov", "f.png");
+  expect_bad("render scene.json --size 32x32 --out f.png --aov depth --aov-out f.png", "--aov-out", "f.exr");
+}
+
+}  // namespace
