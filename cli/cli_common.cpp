@@ -68,6 +68,13 @@ std::string lower_extension(const std::filesystem::path& path) {
   return ext;
 }
 
+int check_threads(int threads) {
+  if (threads < -1 || threads > kMaxThreads)
+    throw CliError("--threads", std::to_string(threads) + " is outside 0.." + std::to_string(kMaxThreads) +
+                                    " (leave it out for all cores)");
+  return threads;
+}
+
 void check_output_dir(const std::string& file, const std::string& option) {
   const std::filesystem::path parent = std::filesystem::path(file).parent_path();
   std::error_code ec;

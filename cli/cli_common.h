@@ -74,6 +74,11 @@ class Stopwatch {
 };
 
 // Fails early (before any long work) when the folder an output file goes to does not exist.
+// The --threads value: -1 (all cores, the default), 0 (inline) up to kMaxThreads; anything else is a CliError
+// on the option (issue 23: 10^8 threads ended in "out of memory").
+inline constexpr int kMaxThreads = 1024;
+int check_threads(int threads);
+
 void check_output_dir(const std::string& file, const std::string& option);
 
 // A file's lower-case extension with its dot (".exr"), for format decisions.

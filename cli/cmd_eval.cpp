@@ -158,7 +158,7 @@ int run_eval(const EvalArgs& a) {
   const auto biases = parse_names<tech::BiasMode>(a.biases, "--biases", "bias mode", scenes::parse_bias_mode,
                                                   scenes::bias_mode_names());
   const auto sizes = parse_sizes(a.sizes);
-  if (a.threads < -1) throw CliError("--threads", "expected 0 or more threads");
+  check_threads(a.threads);
   if (a.near_radius < 0 || a.near_radius > 64) throw CliError("--near-radius", "expected 0..64 pixels");
   if (!std::isfinite(a.shimmer_pixels) || std::fabs(a.shimmer_pixels) > 16.0f)
     throw CliError("--shimmer-pixels", "expected a slide of at most 16 pixels");

@@ -130,7 +130,7 @@ int run_render(const RenderArgs& a) {
     throw CliError("--poisson-taps", std::to_string(a.poisson_taps) + " is not 4 or 16");
   const std::optional<int> shadow_size =
       a.shadow_size_option->count() ? std::optional<int>(check_side(a.shadow_size, "--shadow-size")) : std::nullopt;
-  if (a.threads < -1) throw CliError("--threads", "expected 0 or more threads");
+  check_threads(a.threads);
   if (a.frames < 1) throw CliError("--frames", "expected 1 or more frames");
   for (const shading::tech::ParamSpec* p : all_params())
     if (const auto it = a.params.find(std::string(p->key)); it != a.params.end())

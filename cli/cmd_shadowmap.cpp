@@ -50,7 +50,7 @@ int run_shadowmap(const ShadowmapArgs& a) {
     const auto [factor, units] = parse_float_pair(a.offset, "--offset");
     state.polygon_offset = {factor, units};
   }
-  if (a.threads < -1) throw CliError("--threads", "expected 0 or more threads");
+  check_threads(a.threads);
   if (lower_extension(a.out) != ".exr") throw CliError("--out", "expected an .exr file name");
   check_output_dir(a.out, "--out");
   if (a.repeat < 0) throw CliError("--repeat", "expected a count of 0 or more");

@@ -216,6 +216,9 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
     expect_bad("inspect wide.exr --png wide.png", "--png", "wide.png");
     EXPECT_EQ(shadowlab(dir, "inspect wide.exr").code, 0);
   }
+  // Issue 23: absurd thread counts are refused on the option (10^8 ended in "out of memory").
+  expect_bad("render tutorial --size 16x16 --threads 100000000 --out t.png", "--threads", "t.png");
+  expect_bad(shadowmap("--threads -2"), "--threads", "d.exr");
   expect_bad("inspect nothing.exr", "nothing.exr");
   expect_bad("render tutorial --size 16x16 --out nodir/f.png", "--out");
   expect_bad("diff nothing.exr d.exr", "nothing.exr");
