@@ -31,6 +31,13 @@ SceneDesc tutorial(bool spot) {
   l.shadow.filter = ShadowFilter::pcf;
   l.shadow.bias.mode = BiasMode::slope;
   l.shadow.cull_front = true;  // the tutorial draws back faces into the map, in addition to the bias
+  if (!spot) {
+    // Measured against the ray-cast reference (shadowlab eval, 1280x720): back faces only and a 1024² map left
+    // 345 false-lit pixels along the right wall's floor joint and under the sphere (runs of 16); front faces
+    // and 2048² leave 20, none longer than a pixel, with no more acne (20 false-shadowed against 22).
+    l.shadow.cull_front = false;
+    l.shadow.map_size = 2048;
+  }
   d.lights.push_back(l);
   return d;
 }

@@ -46,11 +46,11 @@ const Case kCases[] = {
     {"duel_cascades_lispsm", "duel", tech::Technique::cascades, "cascade_warp=lispsm", 0x58c216ea08fbf745ull},
     {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0xd33eeda250c0beecull},
     {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0x73ad9cfe95af7fd1ull},
-    {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0x57ac72c8d32cf440ull},
-    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x07ae8d01e390539bull},
-    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0xb8e370af779889dcull},
-    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0xc47ef49bbfe3f7b5ull},
-    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0x354b6be4d447abf6ull},
+    {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0x510be27005158cdcull},
+    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x00e4ce3bc42fd879ull},
+    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0x3a25572f2e61c8a8ull},
+    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x6bb2e9badc63ab05ull},
+    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0x4895268f3d36c768ull},
 };
 
 class ViewFollowingGolden : public testing::TestWithParam<Case> {};
