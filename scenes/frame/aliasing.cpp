@@ -74,9 +74,9 @@ void summarise(AliasingImage& img) {
 
 std::vector<AliasingImage> measure_aliasing(const scenes::Scene& scene, const glm::mat4& view_proj,
                                             std::span<const LightRecord> records,
+                                            std::span<const std::vector<CameraVertex>> mesh_vertices,
                                             raster::DepthTarget& camera_depth, raster::Renderer& renderer) {
   const int w = camera_depth.width(), h = camera_depth.height();
-  std::vector<std::vector<CameraVertex>> vertices(scene.meshes.size());
   std::vector<AliasingImage> out;
   for (const LightRecord& l : records) {
     AliasingImage img;
@@ -88,12 +88,7 @@ std::vector<AliasingImage> measure_aliasing(const scenes::Scene& scene, const gl
       for (const scenes::Instance& inst : scene.instances) {
         if (!inst.receives_shadows) continue;
         const scenes::Mesh& mesh = scene.meshes.at(inst.mesh);
-        std::vector<CameraVertex>& vs = vertices[inst.mesh];
-        if (vs.empty()) {
-          vs.resize(mesh.positions.size());
-          for (size_t i = 0; i < vs.size(); ++i)
-            vs[i] = CameraVertex{mesh.positions[i], i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 1, 0)};
-        }
+        const std::vector<CameraVertex>& vs = mesh_vertices[inst.mesh];
         AliasingShader shader;
         shader.model = inst.transform;
         shader.normal_matrix = glm::transpose(glm::inverse(glm::mat3(inst.transform)));

@@ -33,8 +33,10 @@ struct AliasingImage {
 
 // Measures every light of `records` that has a LightShadow (others get an empty image, measured = 0).
 // `camera_depth` is the camera pass's depth buffer: tested (EQUAL), never written.
+// `mesh_vertices` are the camera pass's vertices per mesh (index as Scene::meshes).
 std::vector<AliasingImage> measure_aliasing(const scenes::Scene& scene, const glm::mat4& view_proj,
                                             std::span<const LightRecord> records,
+                                            std::span<const std::vector<CameraVertex>> mesh_vertices,
                                             raster::DepthTarget& camera_depth, raster::Renderer& renderer);
 
 // The false-colour heat map of an image: log2 of the ratio from blue (1/4 and below) through green (1) and

@@ -225,7 +225,8 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
     }
   }
   frame.stats.camera_ms = ms_since(t_camera);
-  if (config.aliasing) frame.aliasing = measure_aliasing(scene, view_proj, records, depth, renderer);
+  if (config.aliasing)
+    frame.aliasing = measure_aliasing(scene, view_proj, records, mesh_vertices, depth, renderer);
   frame.stats.projective = frame.projective.stats;
   return frame;
 }

@@ -65,13 +65,7 @@ class ClassicShadow final : public LightShadow {
   bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const override {
     const ShadowPass& pass = set_.passes.at(0);
     const glm::vec2 size(float(pass.viewport.width), float(pass.viewport.height));
-    auto texel = [&](glm::vec3 q, glm::vec2& t) {
-      const glm::vec4 c = reader_.shadow * glm::vec4(q, 1.0f);
-      if (!reader_.perspective) return t = glm::vec2(c.x, c.y) * size, true;
-      if (!(c.w > 0.0f)) return false;
-      t = glm::vec2(c.x, c.y) / c.w * size;
-      return true;
-    };
+    auto texel = [&](glm::vec3 q, glm::vec2& t) { return map_texel(reader_.shadow, reader_.perspective, size, q, t); };
     if (!texel(p, out[0])) return false;
     for (size_t i = 0; i < others.size(); ++i)
       if (!texel(others[i], out[i + 1])) return false;

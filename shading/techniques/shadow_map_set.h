@@ -8,6 +8,8 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "raster/state.h"
 #include "raster/target.h"
@@ -41,5 +43,16 @@ inline glm::mat4 bias_matrix() {
 
 // World to texture space (s, t, r, q) of a pass whose viewport covers its whole target: bias × proj × view.
 inline glm::mat4 shadow_matrix(const ShadowPass& p) { return bias_matrix() * p.proj * p.view; }
+
+// The continuous texel coordinates of world point p in a pass `size` texels wide read through `shadow`
+// (shadow_matrix), divided by q where the pass is perspective; false behind its centre of projection. For the
+// aliasing measure (LightShadow::texel_coords).
+inline bool map_texel(const glm::mat4& shadow, bool perspective, glm::vec2 size, glm::vec3 p, glm::vec2& texel) {
+  const glm::vec4 c = shadow * glm::vec4(p, 1.0f);
+  if (!perspective) return texel = glm::vec2(c.x, c.y) * size, true;
+  if (!(c.w > 0.0f)) return false;
+  texel = glm::vec2(c.x, c.y) / c.w * size;
+  return true;
+}
 
 }  // namespace shading::tech

@@ -96,14 +96,9 @@ inline bool slice_context(const SliceMap& s, const SliceLight& l, glm::vec3 p, g
   return true;
 }
 
-// The continuous texel coordinates of p in map s (for the aliasing measure); false behind a perspective map's
-// centre of projection.
+// The continuous texel coordinates of p in map s (for the aliasing measure).
 inline bool slice_texel(const SliceMap& s, glm::vec3 p, glm::vec2& texel) {
-  const glm::vec4 c = s.shadow * glm::vec4(p, 1.0f);
-  if (!s.perspective) return texel = glm::vec2(c.x, c.y) * s.size, true;
-  if (!(c.w > 0.0f)) return false;
-  texel = glm::vec2(c.x, c.y) / c.w * s.size;
-  return true;
+  return map_texel(s.shadow, s.perspective, s.size, p, texel);
 }
 
 // The texel coordinates of p and of `others` in map s.
