@@ -149,9 +149,6 @@ int run_eval(const EvalArgs& a) {
   for (const auto& t : techniques) {
     if (!t) continue;
     if (!tech::info(*t).built) throw CliError("--techniques", "technique " + std::string(tech::info(*t).name) + " is not built yet");
-    if (tech::find_impl(*t) && tech::find_impl(*t)->application == tech::Application::receiver_passes)
-      throw CliError("--techniques", "technique " + std::string(tech::info(*t).name) +
-                                         " is applied as receiver passes, whose shadow the per-pixel record does not hold yet");
   }
   const auto filters = parse_names<tech::FilterKind>(a.filters, "--filters", "filter", scenes::parse_filter,
                                                      scenes::filter_names());

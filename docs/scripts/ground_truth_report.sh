@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the sweeps behind docs/ground-truth-report.md: `shadowlab eval` on each built-in scene at 1280×720 with
 # shimmer (half a pixel, half a degree), one report folder per scene (eval.csv, eval.json, eval.html, contact
-# sheets). The projective scene is refused by eval (its shadow is blended in after the camera pass).
+# sheets).
 #   docs/scripts/ground_truth_report.sh [path/to/shadowlab] [output folder]
 #   (defaults: build/cli/shadowlab, ground-truth-report)
 set -euo pipefail
@@ -18,3 +18,5 @@ omni=(--filters hard,pcf --biases slope,normal --sizes 512,1024)
     --sizes 512,1024,2048 "${common[@]}" --out "$out/tutorial-spot"
 "$bin" eval pyramid --techniques cube,paraboloid,pyramid "${omni[@]}" "${common[@]}" --out "$out/pyramid"
 "$bin" eval paraboloid --techniques cube,paraboloid "${omni[@]}" "${common[@]}" --out "$out/paraboloid"
+"$bin" eval projective --techniques projective,shadowmap --filters pcf --biases slope --sizes 256,1024,2048 \
+    "${common[@]}" --out "$out/projective"

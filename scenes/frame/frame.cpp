@@ -219,7 +219,8 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
       auto draw = [&](const auto& sh) {
         return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, sh,
                              std::span<const CameraVertex>(mesh_vertices[inst.mesh]),
-                             std::span<const uint32_t>(mesh.indices), frame.projective, index);
+                             std::span<const uint32_t>(mesh.indices), frame.projective, index,
+                             frame.surface ? &*frame.surface : nullptr);
       };
       frame.stats.draws += config.quad_fragments ? draw(raster::QuadPathOnly<CameraShader>{shader}) : draw(shader);
     }

@@ -57,7 +57,7 @@ struct FrameConfig {
   bool export_maps = true;      // keep what export_maps needs (projective: the per-caster maps)
   bool quad_fragments = false;  // camera pass on the quad path only (fragment()), for tests of the wide path
   // Keep the camera pass's per-pixel record of the visible surface (Frame::surface, surface_record.h). Lights
-  // applied as receiver passes (projective) record visibility 1: their shadow is blended in afterwards.
+  // applied as receiver passes (projective) record the product of the factors those passes multiplied in.
   bool surface_record = false;
 };
 

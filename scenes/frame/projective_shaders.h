@@ -7,13 +7,16 @@
 //   single-pass: SinglePassShader<Base>: Base's shading and up to N maps multiplied in one fragment shader,
 //                each stage at the frame buffer's 8-bit precision (as the multi-stage combiners of the time),
 //                so it reproduces the multipass image exactly; overlaps beyond N fall back to extra passes.
-// A receiver that overlaps no caster is drawn once, with Base alone.
+// A receiver that overlaps no caster is drawn once, with Base alone. With a SurfaceRecord, both ways multiply
+// each map's factor into the record's visibility of the caster's light at the pixels they draw (the depth test
+// runs before the fragment shader, so these are exactly the pixels the blend darkens).
 #pragma once
 #include <algorithm>
 #include <array>
 #include <span>
 
 #include "scenes/frame/frame_projective.h"
+#include "scenes/frame/surface_record.h"
 #include "raster/renderer.h"
 #include "shading/techniques/projective_lookup.h"
 
@@ -24,6 +27,14 @@ shading::Quad<glm::vec3> world_positions(const raster::QuadIn<Varyings>& q) {
   return {q.in[0].world, q.in[1].world, q.in[2].world, q.in[3].world};
 }
 
+// One map's factors into the record, on the quad's drawn (live) lanes.
+template <class Varyings>
+void record_factors(SurfaceRecord& record, const raster::QuadIn<Varyings>& q, const shading::Quad<float>& f,
+                    size_t light) {
+  for (size_t l = 0; l < 4; ++l)
+    if ((q.live >> l) & 1u) record.multiply_visibility(q.frag_coord[l].x, q.frag_coord[l].y, light, f[l]);
+}
+
 // One caster's map as a multiplicative pass: colour = the shadow factor.
 template <class Base>
 struct ApplyShader {
@@ -31,11 +42,14 @@ struct ApplyShader {
   using Varyings = typename Base::Varyings;
   Base base;  // for its vertex stage only
   const shading::tech::ProjectiveReader* reader = nullptr;
+  SurfaceRecord* record = nullptr;  // optional: the factor goes into light `light`'s visibility
+  size_t light = 0;
 
   glm::vec4 vertex(const Vertex& v, Varyings& out) const { return base.vertex(v, out); }
   void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const {
     const shading::Quad<float> f = shading::tech::projective_factors(*reader, world_positions(q));
     for (size_t l = 0; l < 4; ++l) out.color[l] = glm::vec4(f[l], f[l], f[l], 1.0f);
+    if (record) record_factors(*record, q, f, light);
   }
 };
 
@@ -46,7 +60,9 @@ struct SinglePassShader {
   using Varyings = typename Base::Varyings;
   Base base;
   std::array<const shading::tech::ProjectiveReader*, kMaxProjectiveTextures> readers{};
+  std::array<size_t, kMaxProjectiveTextures> light_of{};  // each map's light, for the record
   int count = 0;
+  SurfaceRecord* record = nullptr;  // optional: Base records the surface, the maps' factors multiply in
 
   glm::vec4 vertex(const Vertex& v, Varyings& out) const { return base.vertex(v, out); }
   void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const {
@@ -56,6 +72,7 @@ struct SinglePassShader {
     const shading::Quad<glm::vec3> p = world_positions(q);
     for (int i = 0; i < count; ++i) {
       const shading::Quad<float> f = shading::tech::projective_factors(*readers[size_t(i)], p);
+      if (record) record_factors(*record, q, f, light_of[size_t(i)]);
       for (size_t l = 0; l < 4; ++l) {
         glm::vec4& c = out.color[l];
         c = glm::vec4(unorm8(f[l] * c.r), unorm8(f[l] * c.g), unorm8(f[l] * c.b), unorm8(1.0f * c.a));
@@ -69,7 +86,8 @@ struct SinglePassShader {
 template <class Shader>
 raster::DrawStats draw_receiver(raster::Renderer& renderer, raster::RenderTargets targets, const raster::DrawState& s,
                                 const Shader& shader, std::span<const typename Shader::Vertex> vertices,
-                                std::span<const uint32_t> indices, ProjectiveFrame& pf, size_t instance) {
+                                std::span<const uint32_t> indices, ProjectiveFrame& pf, size_t instance,
+                                SurfaceRecord* record = nullptr) {
   if (instance >= pf.stats.receiver_draws.size()) pf.stats.receiver_draws.resize(instance + 1, 0);
   uint32_t& draws = pf.stats.receiver_draws[instance];
   const std::span<const Overlap> list =
@@ -82,7 +100,12 @@ raster::DrawStats draw_receiver(raster::Renderer& renderer, raster::RenderTarget
   if (pf.mode == shading::tech::ProjectiveMode::single_pass) {
     SinglePassShader<Shader> sp{shader};
     sp.count = int(std::min<size_t>(list.size(), size_t(std::clamp(pf.max_textures, 1, kMaxProjectiveTextures))));
-    for (int i = 0; i < sp.count; ++i) sp.readers[size_t(i)] = &pf.casters[list[size_t(i)].caster].reader;
+    sp.record = record;
+    for (int i = 0; i < sp.count; ++i) {
+      const AppliedCaster& c = pf.casters[list[size_t(i)].caster];
+      sp.readers[size_t(i)] = &c.reader;
+      sp.light_of[size_t(i)] = c.light;
+    }
     stats += renderer.draw(targets, s, sp, vertices, indices);
     done = size_t(sp.count);
   } else {
@@ -102,8 +125,8 @@ raster::DrawStats draw_receiver(raster::Renderer& renderer, raster::RenderTarget
       r = raster::Rect{x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
     }
     m.scissor = r;
-    stats += renderer.draw(targets, m, ApplyShader<Shader>{shader, &pf.casters[list[k].caster].reader}, vertices,
-                           indices);
+    const AppliedCaster& c = pf.casters[list[k].caster];
+    stats += renderer.draw(targets, m, ApplyShader<Shader>{shader, &c.reader, record, c.light}, vertices, indices);
     ++draws;
     ++pf.stats.shadow_passes;
   }

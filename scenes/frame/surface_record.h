@@ -30,13 +30,22 @@ struct SurfaceRecord {
   // lit_facing: the light reaches the point (n·l > 0 with the shading normal, inside the spot cone and range)
   // and its instance receives shadows, so the light's technique was asked for a shadow factor.
   std::vector<uint8_t> lit_facing;
-  // The technique's shadow factor in [0, 1] where lit_facing, else 1 (also 1 for technique none).
+  // The technique's shadow factor in [0, 1] where lit_facing, else 1 (also 1 for technique none). For lights
+  // applied as receiver passes (projective) it is the product of the factors of the caster maps that the
+  // passes multiplied into the pixel (before the frame buffer's 8-bit rounding).
   std::vector<float> visibility;
 
   SurfaceRecord() = default;
   SurfaceRecord(int w, int h, size_t light_count);
   size_t pixels() const { return size_t(width) * size_t(height); }
   size_t index(int x, int y) const { return size_t(y) * size_t(width) + size_t(x); }
+  // Multiplies the factor `f` into light `light`'s visibility at the pixel whose centre is `frag` (integer +
+  // 0.5), where that light is lit-facing: how shadows applied in later passes (projective receiver passes) are
+  // recorded. Each pixel belongs to one tile, so passes drawn in parallel never touch the same value.
+  void multiply_visibility(float frag_x, float frag_y, size_t light, float f) {
+    const size_t p = index(int(frag_x), int(frag_y)) * lights + light;
+    if (lit_facing[p]) visibility[p] *= f;
+  }
 };
 
 // What `shadowlab render --aov` can ask for, by name: position, normal, visibility, depth.

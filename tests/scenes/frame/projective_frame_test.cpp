@@ -2,14 +2,17 @@
 // receivers outside every caster frustum are drawn once; the cache rebuilds nothing for a still frame and
 // exactly the moved caster's map; multipass and single-pass frames agree within 1/255 (here: exactly); the
 // built-in `projective` scene's golden hash is bit-exact at 0, 1 and 2 threads; maps come out as EXR records;
-// bad params name their key.
+// bad params name their key; the per-pixel surface record holds the product of the maps' factors (analytic
+// footprint, the same in both modes and at every thread count).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "scenes/frame/frame.h"
 #include "scenes/builtin_scenes.h"
@@ -227,6 +230,46 @@ TEST(ProjectiveFrame, BadParamsNameTheirKey) {
   frame::FrameConfig o = small();
   o.params["projective_mode"] = std::string("sometimes");
   EXPECT_THROW(frame::render_frame(scene, o, r), std::invalid_argument);
+}
+
+// The surface record of a projective light: the product of the factors the receiver passes multiplied in. The
+// box (1 m, from 1 m to 2 m above the floor) under a sun along (1, −1, 0) shadows exactly the floor's rectangle
+// 0.5 < x < 2.5, |z| < 0.5 (a point at height y lands y further along x); pixels well inside record 0, pixels well
+// outside 1, in both modes and at 0, 1, 2 threads.
+TEST(ProjectiveFrame, SurfaceRecordHoldsTheMapsFactors) {
+  scenes::Scene scene = scene_from(kTwoFloors);
+  scene.cameras.at(0).position = glm::vec3(0.0f, 8.0f, 4.0f);
+  scene.cameras.at(0).target = glm::vec3(0.0f);
+  scene.lights.at(0).direction = glm::vec3(1.0f, -1.0f, 0.0f);
+  std::vector<float> first;
+  for (int threads : {0, 1, 2}) {
+    for (const char* mode : {"multipass", "single-pass"}) {
+      raster::Renderer r(threads);
+      frame::FrameConfig o = small(200, 150);
+      o.surface_record = true;
+      o.params["projective_mode"] = std::string(mode);
+      const frame::Frame f = frame::render_frame(scene, o, r);
+      ASSERT_TRUE(f.surface);
+      const frame::SurfaceRecord& rec = *f.surface;
+      size_t inside = 0, outside = 0, wrong = 0;
+      for (size_t p = 0; p < rec.pixels(); ++p) {
+        const glm::vec3 w = rec.position[p];
+        if (!rec.covered[p] || std::fabs(w.y) > 1e-3f || !rec.lit_facing[p]) continue;  // floor pixels only
+        if (std::fabs(w.x - 1.5f) < 0.9f && std::fabs(w.z) < 0.4f) {
+          ++inside;
+          wrong += rec.visibility[p] != 0.0f;
+        } else if (std::fabs(w.x - 1.5f) > 1.1f || std::fabs(w.z) > 0.6f) {
+          ++outside;
+          wrong += rec.visibility[p] != 1.0f;
+        }
+      }
+      EXPECT_GT(inside, 500u) << mode;
+      EXPECT_GT(outside, 5000u) << mode;
+      EXPECT_EQ(wrong, 0u) << mode << " threads " << threads;
+      if (first.empty()) first = rec.visibility;
+      EXPECT_TRUE(rec.visibility == first) << mode << " threads " << threads;
+    }
+  }
 }
 
 }  // namespace
