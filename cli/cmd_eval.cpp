@@ -205,7 +205,7 @@ int run_eval(const EvalArgs& a) {
     for (Moved& m : motions) m.ref.emplace(reference::reference_for(m.scene, base, renderer));
 
     nlohmann::json rows = nlohmann::json::array();
-    std::vector<std::pair<std::string, raster::ColorTarget>> maps;
+    ContactSheets sheets;  // encoded as each combination ends: a sweep keeps PNG bytes, not whole frames
     for (size_t k = 0; k < combos.size(); ++k) {
       if (k % shard.count != shard.index) continue;
       const Combination& c = combos[k];
@@ -240,7 +240,8 @@ int run_eval(const EvalArgs& a) {
       std::optional<raster::ColorTarget> heat;
       if (!sf.frame.aliasing.empty() && sf.frame.aliasing[0].measured > 0)
         heat.emplace(frame::aliasing_heat_map(sf.frame.aliasing[0]));
-      maps.emplace_back(c.label(), reference::contact_sheet(sf.frame.color, sf.score.errors, heat ? &*heat : nullptr));
+      sheets[c.label()] = scenes::io::encode_png(
+          reference::contact_sheet(sf.frame.color, sf.score.errors, heat ? &*heat : nullptr), false, c.label() + ".png");
     }
 
     const nlohmann::json report = {
@@ -256,8 +257,7 @@ int run_eval(const EvalArgs& a) {
     std::filesystem::create_directories(a.out, ec);
     if (ec) throw CliError("--out", "cannot create directory " + a.out + " (" + ec.message() + ")");
     const std::filesystem::path dir(a.out);
-    for (const auto& [label, image] : maps) scenes::io::write_png(dir / (label + ".png"), image);
-    write_eval_report(dir, report);
+    write_eval_report(dir, report, sheets);
   } catch (const frame::FrameError& e) {
     throw as_cli_error(e);
   }

@@ -83,14 +83,21 @@ int run_merge(const MergeArgs& a) {
   for (const auto& r : reports) times.push_back(r["reference"].value("rays_ms", 0.0));
   merged["reference"]["rays_ms_per_shard"] = times;
 
+  // Each result's contact sheet from the shard that holds it.
+  ContactSheets sheets;
+  for (size_t s = 0; s < reports.size(); ++s)
+    for (const auto& row : reports[s]["results"]) {
+      const std::string label = row.at("combination").get<std::string>();
+      if (sheets.count(label)) continue;
+      const fs::path png = fs::path(a.shards[s]) / (label + ".png");
+      std::ifstream in(png, std::ios::binary);
+      if (!in) throw CliError(png.string(), "cannot be read (the shard's contact sheet for " + label + ")");
+      sheets[label].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      if (in.bad()) throw CliError(png.string(), "cannot be read");
+    }
   fs::create_directories(a.out, ec);
   if (ec) throw CliError("--out", "cannot create directory " + a.out + " (" + ec.message() + ")");
-  for (const std::string& d : a.shards)
-    for (const auto& e : fs::directory_iterator(d))
-      if (e.path().extension() == ".png" &&
-          !fs::copy_file(e.path(), fs::path(a.out) / e.path().filename(), fs::copy_options::overwrite_existing, ec))
-        throw CliError("--out", "cannot copy " + e.path().string() + " (" + ec.message() + ")");
-  write_eval_report(a.out, merged);
+  write_eval_report(a.out, merged, sheets);
   return 0;
 }
 

@@ -72,7 +72,7 @@ document.querySelectorAll('th').forEach((th, col) => th.addEventListener('click'
 
 }  // namespace
 
-std::string eval_html(const nlohmann::json& report, const std::filesystem::path& dir) {
+std::string eval_html(const nlohmann::json& report, const ContactSheets& sheets) {
   const nlohmann::json& results = report.at("results");
   const nlohmann::json& ref = report.at("reference");
   std::ostringstream h;
@@ -102,14 +102,12 @@ std::string eval_html(const nlohmann::json& report, const std::filesystem::path&
   for (const auto& row : results) {
     const std::string label = row.at("combination").get<std::string>();
     if (!shown.insert(label).second) continue;
-    const std::filesystem::path png = dir / (label + ".png");
-    std::ifstream in(png, std::ios::binary);
-    if (!in) throw CliError(png.string(), "cannot be read for the HTML page");
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
+    const auto sheet = sheets.find(label);
+    if (sheet == sheets.end()) throw CliError(label + ".png", "no contact sheet for the HTML page");
+    const std::string bytes(sheet->second.begin(), sheet->second.end());
     h << "<figure><figcaption>" << escape(label)
       << " (frame | error map | the first light's aliasing heat map where measured)</figcaption><img alt=\""
-      << escape(label) << "\" src=\"data:image/png;base64," << base64(bytes.str()) << "\"></figure>\n";
+      << escape(label) << "\" src=\"data:image/png;base64," << base64(bytes) << "\"></figure>\n";
   }
   h << kSortScript << "\n</body></html>\n";
   return h.str();

@@ -2,14 +2,19 @@
 // table (click a column header to sort by it), and each combination's contact sheet (frame | error map) embedded
 // as a data: URI, so the page can be mailed or archived alone. Shared by `eval` and `eval-merge`.
 #pragma once
-#include <filesystem>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace cli {
 
-// The page for `report` (eval.json's content); the contact sheets are read from DIR/<combination>.png.
-std::string eval_html(const nlohmann::json& report, const std::filesystem::path& dir);
+// Each combination's contact sheet as PNG bytes, by combination label.
+using ContactSheets = std::map<std::string, std::vector<unsigned char>>;
+
+// The page for `report` (eval.json's content), embedding `sheets`; a combination without a sheet throws
+// CliError naming it.
+std::string eval_html(const nlohmann::json& report, const ContactSheets& sheets);
 
 }  // namespace cli

@@ -20,13 +20,8 @@ const char* const kColumns[] = {"index", "combination", "technique", "filter", "
                                 "camera_pass_ms", "score_ms", "shimmer_camera_pct", "shimmer_light_pct",
                                 "aliasing_max", "aliasing_p95", "aliasing_mean"};
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  scenes::io::write_atomically(path, [&](const std::filesystem::path& tmp) {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    f.close();
-    if (!f) throw scenes::io::IoError(tmp, "cannot write");
-  });
+void stage_text(scenes::io::WriteBatch& batch, const std::filesystem::path& path, const std::string& text) {
+  batch.stage(path, [&](const std::filesystem::path& tmp) { scenes::io::write_bytes(tmp, text.data(), text.size()); });
 }
 
 }  // namespace
@@ -77,10 +72,16 @@ std::string eval_csv(const nlohmann::json& results) {
   return out;
 }
 
-void write_eval_report(const std::filesystem::path& dir, const nlohmann::json& report) {
-  write_text(dir / "eval.json", report.dump(2) + "\n");
-  write_text(dir / "eval.csv", eval_csv(report.at("results")));
-  write_text(dir / "eval.html", eval_html(report, dir));
+void write_eval_report(const std::filesystem::path& dir, const nlohmann::json& report, const ContactSheets& sheets) {
+  const std::string html = eval_html(report, sheets);  // before anything is staged: a missing sheet writes nothing
+  scenes::io::WriteBatch batch;
+  for (const auto& [label, png] : sheets)
+    batch.stage(dir / (label + ".png"),
+                [&](const std::filesystem::path& tmp) { scenes::io::write_bytes(tmp, png.data(), png.size()); });
+  stage_text(batch, dir / "eval.json", report.dump(2) + "\n");
+  stage_text(batch, dir / "eval.csv", eval_csv(report.at("results")));
+  stage_text(batch, dir / "eval.html", html);
+  batch.commit();
 }
 
 }  // namespace cli

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/eval_html.h"
+
 namespace cli {
 
 // Combinations K with K mod count == index belong to the shard.
@@ -25,8 +27,9 @@ std::span<const char* const> eval_columns();
 // The CSV of a report's "results" (header line first, RFC 4180 quoting).
 std::string eval_csv(const nlohmann::json& results);
 
-// Writes DIR/eval.json, DIR/eval.csv and DIR/eval.html (eval_html.h: it embeds DIR/<combination>.png, which must
-// be written first), each through a temporary file.
-void write_eval_report(const std::filesystem::path& dir, const nlohmann::json& report);
+// Writes DIR/<combination>.png for every contact sheet, DIR/eval.json, DIR/eval.csv and DIR/eval.html (which
+// embeds the sheets) as one WriteBatch: all of them are staged through temporaries first and renamed into place
+// together, so a full disk or a failed write leaves none of them (and no damaged older file).
+void write_eval_report(const std::filesystem::path& dir, const nlohmann::json& report, const ContactSheets& sheets);
 
 }  // namespace cli

@@ -51,23 +51,26 @@ void write_png(const std::filesystem::path& path, const raster::ColorTarget& tar
   batch.commit();
 }
 
-void write_png(WriteBatch& batch, const std::filesystem::path& path, const raster::ColorTarget& target, bool alpha) {
+std::vector<unsigned char> encode_png(const raster::ColorTarget& target, bool alpha, const std::filesystem::path& name) {
   const std::vector<uint8_t> pixels = srgb8_top_first(target, alpha);
+  std::vector<unsigned char> png;
+  OIIO::Filesystem::IOVecOutput proxy(png);
+  auto out = OIIO::ImageOutput::create("png");
+  if (!out) throw IoError(name, "cannot create a PNG writer: " + OIIO::geterror());
+  OIIO::ImageSpec spec(target.width(), target.height(), alpha ? 4 : 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  // GL colour is straight (unassociated) alpha: without this OpenImageIO would divide colour by alpha.
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  if (!out->set_ioproxy(&proxy) || !out->open(name.string(), spec)) throw IoError(name, out->geterror());
+  if (!out->write_image(OIIO::TypeDesc::UINT8, pixels.data())) throw IoError(name, out->geterror());
+  if (!out->close()) throw IoError(name, out->geterror());
+  return png;
+}
+
+void write_png(WriteBatch& batch, const std::filesystem::path& path, const raster::ColorTarget& target, bool alpha) {
   // Encoded in memory, then written by write_bytes, which checks every write and the flush: the PNG library's
   // own file writes do not report a full disk.
-  std::vector<unsigned char> png;
-  {
-    OIIO::Filesystem::IOVecOutput proxy(png);
-    auto out = OIIO::ImageOutput::create("png");
-    if (!out) throw IoError(path, "cannot create a PNG writer: " + OIIO::geterror());
-    OIIO::ImageSpec spec(target.width(), target.height(), alpha ? 4 : 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    // GL colour is straight (unassociated) alpha: without this OpenImageIO would divide colour by alpha.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!out->set_ioproxy(&proxy) || !out->open(path.string(), spec)) throw IoError(path, out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::UINT8, pixels.data())) throw IoError(path, out->geterror());
-    if (!out->close()) throw IoError(path, out->geterror());
-  }
+  const std::vector<unsigned char> png = encode_png(target, alpha, path);
   batch.stage(path, [&](const std::filesystem::path& tmp) { write_bytes(tmp, png.data(), png.size()); });
 }
 

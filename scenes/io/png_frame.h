@@ -15,6 +15,9 @@ namespace scenes::io {
 // (alpha stays linear), then rounded to the nearest byte.
 std::vector<uint8_t> srgb8_top_first(const raster::ColorTarget& target, bool alpha = false);
 
+// srgb8_top_first(target, alpha) encoded as a PNG file's bytes, in memory. `name` is for errors (IoError).
+std::vector<unsigned char> encode_png(const raster::ColorTarget& target, bool alpha, const std::filesystem::path& name);
+
 // Writes srgb8_top_first(target, alpha) as a PNG through a temporary file. Throws IoError.
 void write_png(const std::filesystem::path& path, const raster::ColorTarget& target, bool alpha = false);
 // The same, staged in `batch` (it replaces `path` when the batch commits).

@@ -102,6 +102,22 @@ TEST_F(EvalCli, ProjectiveIsScored) {
   EXPECT_LT(projective, none / 20);  // the per-caster map finds it
 }
 
+// The report's files are written together: when one of them cannot be (here eval.html is taken by a directory),
+// none of the others appears and no temporary is left.
+TEST_F(EvalCli, ReportFilesAreAllOrNothing) {
+  fs::create_directories(dir / "report" / "eval.html");
+  const Outcome r = shadowlab(dir, "eval scene.json --techniques shadowmap --filters hard --biases slope --sizes 128 "
+                                   "--size 64x48 --out report");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("eval.html"));
+  size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(dir / "report")) {
+    ++entries;
+    EXPECT_EQ(e.path().filename(), "eval.html") << e.path();
+  }
+  EXPECT_EQ(entries, 1u);
+}
+
 TEST_F(EvalCli, BadInputWritesNothing) {
   const std::string base = "eval scene.json --size 64x48 --out report ";
   expect_bad(base + "--techniques shadowmap,bogus", "--techniques", "report");
