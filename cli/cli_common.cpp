@@ -92,17 +92,39 @@ scenes::Scene load_scene_or_builtin(const std::string& name) {
   return scenes::builtin_scene(name);  // throws `NAME: unknown built-in scene (known: ...)`
 }
 
-Progress::Progress() : enabled_(isatty(STDERR_FILENO) == 1) {}
+Progress::Progress() : enabled_(isatty(STDERR_FILENO) == 1) {
+  if (!enabled_) return;
+  // One small thread redraws the line a few times a second once the work has run for a second: short runs
+  // print nothing, long ones show what they are doing and for how long.
+  ticker_ = std::thread([this] {
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!stop_) {
+      wake_.wait_for(lock, std::chrono::milliseconds(250));
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (stop_ || s < 1.0 || line_.empty()) continue;
+      std::fprintf(stderr, "\r\033[K%s (%.0f s)", line_.c_str(), s);
+      std::fflush(stderr);
+      dirty_ = true;
+    }
+  });
+}
 
 Progress::~Progress() {
+  if (!enabled_) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  ticker_.join();
   if (dirty_) std::fputs("\r\033[K", stderr);  // the progress line disappears
 }
 
 void Progress::update(const std::string& line) {
   if (!enabled_) return;
-  std::fprintf(stderr, "\r\033[K%s", line.c_str());
-  std::fflush(stderr);
-  dirty_ = true;
+  std::lock_guard<std::mutex> lock(mutex_);
+  line_ = line;
 }
 
 }  // namespace cli

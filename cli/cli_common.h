@@ -3,6 +3,9 @@
 // name, terminal-only progress, and a stopwatch.
 #pragma once
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -34,6 +37,8 @@ Command add_diff_command(CLI::App& parent);
 Command add_eval_command(CLI::App& parent);
 Command add_eval_merge_command(CLI::App& parent);
 Command add_list_command(CLI::App& parent);
+Command add_render_merge_command(CLI::App& parent);
+Command add_check_command(CLI::App& parent);
 
 struct Size2 {
   int width = 0, height = 0;
@@ -50,16 +55,25 @@ std::pair<float, float> parse_float_pair(const std::string& text, const std::str
 // like a path (a '/' or an extension) but is no file is reported as a missing file.
 scenes::Scene load_scene_or_builtin(const std::string& name);
 
-// Progress lines on stderr, only when stderr is a terminal; each call overwrites the previous line.
+// A progress line on stderr for work that runs over a second, only when stderr is a terminal (silent in scripts
+// and CI): update() sets what the work is doing; a small thread redraws it with the elapsed time four times a
+// second from the first second on; the line is erased at the end.
 class Progress {
  public:
   Progress();
   ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
   void update(const std::string& line);
 
  private:
   bool enabled_ = false;
   bool dirty_ = false;
+  bool stop_ = false;
+  std::string line_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::thread ticker_;
 };
 
 // Milliseconds since construction.

@@ -1,95 +1,72 @@
-// `shadowlab diff A B`: compares two shadow maps (EXR) or two frames (PNG) pixel by pixel and prints the
-// maximum and mean difference, the pixels over the tolerance and, for depth maps, coverage disagreements.
-// Exit 0 when no pixel is over the tolerance, 1 when some are, so it can sit in a regression script.
-#include <algorithm>
+// `shadowlab diff A B`: compares two depth maps (EXR, the depth channel chosen as `inspect` does) or two frames
+// (PNG) and reports the image metrics a script can threshold: max, mean, RMSE, PSNR (OpenImageIO's compare, peak
+// 1), the pixels over the tolerance (count and share) and, for depth maps, coverage disagreements. Exit 0 when
+// the pixels over the tolerance are within --fail-over (default: none allowed), 1 otherwise; --diff-out writes
+// a colour-mapped difference image. Values are in the files' [0, 1] units (a PNG byte step is 1/255).
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include <OpenImageIO/imagebufalgo.h>
+#include <nlohmann/json.hpp>
+
 #include "cli/cli_common.h"
+#include "cli/image_compare.h"
+#include "cli/image_input.h"
+#include "cli/json_output.h"
+#include "raster/target.h"
 #include "scenes/io/exr_map.h"
-#include "scenes/io/material_texture.h"
+#include "scenes/io/png_frame.h"
 
 namespace cli {
 namespace {
 
 struct DiffArgs {
-  std::string a, b;
+  std::string a, b, fail_over, diff_out, channel;
   double tolerance = 0.0;
+  bool json = false;
 };
-
-// What a comparison found. Per pixel the difference is the largest absolute difference of any channel, in
-// the files' [0, 1] units (a PNG byte step is 1/255).
-struct DiffResult {
-  double max = 0.0, sum = 0.0;
-  size_t over = 0, pixels = 0;
-  size_t only_a = 0, only_b = 0;  // depth maps: covered (< 1) in one map and not the other
-
-  void add(double d, double tolerance) {
-    max = std::max(max, d);
-    sum += d;
-    over += d > tolerance ? 1 : 0;
-  }
-};
-
-void check_same_size(const DiffArgs& a, int wa, int ha, int wb, int hb) {
-  if (wa != wb || ha != hb)
-    throw CliError(a.b, "size " + std::to_string(wb) + "x" + std::to_string(hb) + " differs from " + a.a + " (" +
-                            std::to_string(wa) + "x" + std::to_string(ha) + ")");
-}
-
-DiffResult diff_maps(const DiffArgs& args) {
-  const scenes::io::ExrMap a = scenes::io::read_exr_map(args.a);
-  const scenes::io::ExrMap b = scenes::io::read_exr_map(args.b);
-  check_same_size(args, a.width, a.height, b.width, b.height);
-  DiffResult r;
-  r.pixels = a.z.size();
-  for (size_t i = 0; i < a.z.size(); ++i) {
-    const float za = a.z[i], zb = b.z[i];
-    // NaN in either map counts as an infinite difference, never as a match.
-    const double d = (std::isnan(za) || std::isnan(zb)) ? INFINITY : std::fabs(double(za) - double(zb));
-    r.add(d, args.tolerance);
-    const bool ca = za < 1.0f, cb = zb < 1.0f;
-    r.only_a += ca && !cb;
-    r.only_b += cb && !ca;
-  }
-  return r;
-}
-
-DiffResult diff_frames(const DiffArgs& args) {
-  const scenes::io::TextureLoadOptions raw{.srgb = false, .mipmaps = false};  // bytes / 255, unconverted
-  const shading::Texture2D a = scenes::io::load_texture(args.a, raw);
-  const shading::Texture2D b = scenes::io::load_texture(args.b, raw);
-  check_same_size(args, a.width(), a.height(), b.width(), b.height());
-  DiffResult r;
-  r.pixels = size_t(a.width()) * size_t(a.height());
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x) {
-      const glm::vec4 d = glm::abs(a.texel(x, y) - b.texel(x, y));
-      r.add(double(std::max(std::max(d.x, d.y), std::max(d.z, d.w))), args.tolerance);
-    }
-  return r;
-}
 
 int run_diff(const DiffArgs& args) {
   if (!(args.tolerance >= 0.0) || !std::isfinite(args.tolerance))
     throw CliError("--tolerance", "expected a finite number >= 0");
-  const std::string ea = lower_extension(args.a), eb = lower_extension(args.b);
-  for (const std::string* f : {&args.a, &args.b}) {
-    const std::string e = lower_extension(*f);
-    if (e != ".exr" && e != ".png") throw CliError(*f, "expected an .exr shadow map or a .png frame");
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(*f, ec)) throw CliError(*f, "no such file");
+  const FailOver fail_over = parse_fail_over(args.fail_over, "--fail-over");
+  if (!args.diff_out.empty()) {
+    if (lower_extension(args.diff_out) != ".png") throw CliError("--diff-out", "expected a .png file name");
+    check_output_dir(args.diff_out, "--diff-out");
   }
-  if (ea != eb) throw CliError(args.b, "cannot compare a " + eb + " file with a " + ea + " file");
-  const bool depth = ea == ".exr";
-  const DiffResult r = depth ? diff_maps(args) : diff_frames(args);
-  const double mean = r.pixels ? r.sum / double(r.pixels) : 0.0;
-  std::printf("max %.9g, mean %.9g\n", r.max, mean);
-  std::printf("over tolerance %g: %zu of %zu pixels\n", args.tolerance, r.over, r.pixels);
-  if (depth) std::printf("covered only in A: %zu, only in B: %zu\n", r.only_a, r.only_b);
-  return r.over > 0 ? 1 : 0;
+  nlohmann::json j = compare_images(args.a, args.b, {args.tolerance, args.channel, args.diff_out});
+  const bool failed = over_limit(j, fail_over);
+  j["command"] = "diff";
+  j["fail_over"] = {{"value", fail_over.value}, {"unit", fail_over.percent ? "percent" : "pixels"}};
+  j["failed"] = failed;
+  if (args.json) {
+    print_json(j);
+  } else {
+    const double max = j["max"].is_null() ? INFINITY : j["max"].get<double>();
+    const double psnr = j["psnr"].is_null() ? INFINITY : j["psnr"].get<double>();
+    char psnr_text[64];
+    std::snprintf(psnr_text, sizeof psnr_text, "%.6f dB", psnr);
+    std::printf("max %.9g, mean %.9g, RMSE %.9g, PSNR %s\n", max, j["mean"].get<double>(), j["rmse"].get<double>(),
+                std::isfinite(psnr) ? psnr_text : "inf (identical)");
+    if (!j["max_at"].is_null())
+      std::printf("largest difference at x %d, y %d (top row 0)\n", j["max_at"][0].get<int>(), j["max_at"][1].get<int>());
+    std::printf("over tolerance %g: %zu of %zu pixels (%.6f%%)\n", args.tolerance, j["over"].get<size_t>(),
+                j["pixels"].get<size_t>(), j["over_percent"].get<double>());
+    if (j["nan_pixels"].get<size_t>())
+      std::printf("NaN in either file: %zu pixels (counted as over)\n", j["nan_pixels"].get<size_t>());
+    if (j.contains("covered_only_a"))
+      std::printf("covered only in A: %zu, only in B: %zu\n", j["covered_only_a"].get<size_t>(),
+                  j["covered_only_b"].get<size_t>());
+    if (!j["diff_out"].is_null())
+      std::printf("difference image: %s (inferno, 0 to %.9g, NaN white)\n", args.diff_out.c_str(),
+                  j["diff_out"]["range"][1].get<double>());
+    std::printf("%s: at most %g%s allowed over the tolerance\n", failed ? "FAIL" : "pass", fail_over.value,
+                fail_over.percent ? "% of the pixels" : " pixels");
+  }
+  return failed ? 1 : 0;
 }
 
 }  // namespace
@@ -97,11 +74,17 @@ int run_diff(const DiffArgs& args) {
 Command add_diff_command(CLI::App& parent) {
   auto args = std::make_shared<DiffArgs>();
   CLI::App* app = parent.add_subcommand(
-      "diff", "Compare two EXR maps or two PNG frames; exit 1 when a pixel differs by more than the tolerance");
+      "diff", "Compare two EXR depth maps or two PNG frames: max, mean, RMSE, PSNR, pixels over a tolerance; "
+              "exit 1 when too many are over");
   app->add_option("a", args->a, "First file (.exr or .png)")->required();
   app->add_option("b", args->b, "Second file, same kind and size")->required();
   app->add_option("--tolerance", args->tolerance,
                   "Largest difference allowed per pixel, in [0, 1] units (default 0: exact)");
+  app->add_option("--fail-over", args->fail_over,
+                  "Exit 1 only when more than N pixels (or P% of them, e.g. 0.1%) are over the tolerance (default 0)");
+  app->add_option("--diff-out", args->diff_out, "Write the per-pixel difference as a colour-mapped PNG (inferno)");
+  app->add_option("--channel", args->channel, "EXR depth channel of both maps (default: chosen as inspect does)");
+  app->add_flag("--json", args->json, "Print JSON (docs/cli/diff.schema.json) instead of text");
   return {app, [args] { return run_diff(*args); }};
 }
 

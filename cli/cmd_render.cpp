@@ -1,15 +1,27 @@
-// `shadowlab render SCENE`: a whole frame through the scenes/frame library, written as a PNG, with every shadow
-// map as EXR on request and per-frame statistics with --stats. This file only turns arguments into a
+// `shadowlab render SCENE...`: whole frames through the scenes/frame library, written as PNGs, with every shadow
+// map as EXR on request, per-frame statistics with --stats, and --json for scripts (docs/cli/render.schema.json).
+// Several scenes, or a batch file of render command lines, run in one process (start-up paid once); --shard I/N
+// takes every N-th job and `render-merge` joins the shards' JSON. File names take `{scene}` (the scene's name)
+// and a printf frame field (`frame_%04d.png`) for image sequences. This file only turns arguments into
 // frame::FrameConfig: the technique parameters' options come from the vocabulary's ParamSpec lists.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "cli/cli_common.h"
+#include "cli/eval_report.h"
+#include "cli/json_output.h"
+#include "cli/render_line.h"
+#include "cli/render_names.h"
 #include "raster/renderer.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/frame/frame.h"
@@ -22,7 +34,8 @@ namespace cli {
 namespace {
 
 struct RenderArgs {
-  std::string scene;
+  std::vector<std::string> scenes;
+  std::string scene;  // the one scene of a job
   std::string technique, filter, bias, depth_format, size = "1280x720", maps, out = "frame.png", aliasing;
   std::string aov, aov_out;  // --aov position,normal,visibility,depth  --aov-out FILE.exr
   long long shadow_size = 0;
@@ -39,6 +52,8 @@ struct RenderArgs {
       normal_offset;
   // Technique parameters by key (vocabulary.h), set only when given.
   std::map<std::string, shading::tech::ParamValue> params;
+  bool json = false;          // --json: one document on stdout instead of text
+  std::string batch, shard;   // --batch FILE, --shard I/N (top level only)
 };
 
 // Every technique parameter once (the filter parameters and each built technique's own), in table order.
@@ -116,8 +131,11 @@ std::vector<frame::AovChannel> parse_aov_list(const std::string& list, const std
   return channels;
 }
 
-int run_render(const RenderArgs& a) {
-  const Size2 size = parse_size(a.size, "--size");
+void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& args);
+
+// Every check of a job's arguments that needs no rendering, so a bad job (or batch line) fails before any work.
+void check_job(const RenderArgs& a) {
+  parse_size(a.size, "--size");
   check_name(a.technique, "--technique", "technique", scenes::parse_technique(a.technique).has_value(),
              scenes::technique_names());
   check_name(a.filter, "--filter", "filter", scenes::parse_filter(a.filter).has_value(), scenes::filter_names());
@@ -128,10 +146,9 @@ int run_render(const RenderArgs& a) {
     throw CliError("--technique", "technique " + a.technique + " is not built yet");
   if (a.poisson_taps != 0 && a.poisson_taps != 4 && a.poisson_taps != 16)
     throw CliError("--poisson-taps", std::to_string(a.poisson_taps) + " is not 4 or 16");
-  const std::optional<int> shadow_size =
-      a.shadow_size_option->count() ? std::optional<int>(check_side(a.shadow_size, "--shadow-size")) : std::nullopt;
+  if (a.shadow_size_option && a.shadow_size_option->count()) check_side(a.shadow_size, "--shadow-size");
   check_threads(a.threads);
-  if (a.frames < 1) throw CliError("--frames", "expected 1 or more frames");
+  if (a.frames < 1 || a.frames > 1000000) throw CliError("--frames", "expected 1 to 1000000 frames");
   for (const shading::tech::ParamSpec* p : all_params())
     if (const auto it = a.params.find(std::string(p->key)); it != a.params.end())
       if (auto why = shading::tech::value_problem(*p, it->second)) throw CliError(std::string(p->option), *why);
@@ -143,18 +160,156 @@ int run_render(const RenderArgs& a) {
       for (const scenes::BuiltinInfo& b : scenes::list_builtin_scenes()) animated |= b.name == a.scene && b.animated;
     if (!animated) throw CliError("--animate", "'" + a.scene + "' is not an animated built-in scene (animated: projective)");
   }
-  if (lower_extension(a.out) != ".png") throw CliError("--out", "expected a .png file name");
-  check_output_dir(a.out, "--out");
-  if (!a.aliasing.empty()) {
-    if (lower_extension(a.aliasing) != ".png") throw CliError("--aliasing", "expected a .png file name");
-    check_output_dir(a.aliasing, "--aliasing");
-  }
-  const std::vector<frame::AovChannel> aovs = parse_aov_list(a.aov, a.aov_out);
+  // Each output: its kind, its folder, and its frame field (the folder of a pattern is checked as it would be
+  // for frame 1).
+  const std::string stem = scene_stem(a.scene);
+  auto check_file = [&](const std::string& pattern, const char* option, const char* ext) {
+    if (pattern.empty()) return;
+    has_frame_field(pattern, option);
+    const std::string first = expand_name(pattern, stem, 1);
+    if (lower_extension(first) != ext) throw CliError(option, std::string("expected a ") + ext + " file name");
+    check_output_dir(first, option);
+  };
+  check_file(a.out, "--out", ".png");
+  check_file(a.aliasing, "--aliasing", ".png");
+  parse_aov_list(a.aov, a.aov_out.empty() ? "" : expand_name(a.aov_out, stem, 1));
+  if (!a.aov_out.empty()) has_frame_field(a.aov_out, "--aov-out");
   if (!a.maps.empty()) {
+    has_frame_field(a.maps, "--maps");
+    const std::string first = expand_name(a.maps, stem, 1);
     std::error_code ec;
-    if (std::filesystem::exists(a.maps, ec) && !std::filesystem::is_directory(a.maps, ec))
-      throw CliError("--maps", a.maps + " exists and is not a directory");
+    if (std::filesystem::exists(first, ec) && !std::filesystem::is_directory(first, ec))
+      throw CliError("--maps", first + " exists and is not a directory");
   }
+}
+
+// 64-bit FNV-1a of a frame's pixels (the linear RGBA8 target the PNG is encoded from): equal hashes, equal frames.
+std::string pixel_hash(const raster::ColorTarget& c) {
+  uint64_t h = 1469598103934665603ull;
+  for (int y = 0; y < c.height(); ++y) {
+    const uint8_t* row = c.row8(y);
+    for (int x = 0; x < c.width() * 4; ++x) h = (h ^ row[x]) * 1099511628211ull;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h);
+  return buf;
+}
+
+// Writes frame `number`'s outputs: maps, aliasing heat maps, AOVs and the PNG, staged and committed together (a
+// failure on any leaves none of the new files, and no maps directory this call created). Returns the files.
+nlohmann::json write_outputs(const RenderArgs& a, const frame::Frame& result,
+                             const std::vector<frame::AovChannel>& aovs, int number, bool text) {
+  const std::string stem = scene_stem(a.scene);
+  nlohmann::json files = nlohmann::json::array();
+  std::filesystem::path created_dir;
+  try {
+    scenes::io::WriteBatch batch;  // inside the try: its temporaries are gone before the handler runs
+    if (!a.maps.empty()) {
+      const std::filesystem::path dir = expand_name(a.maps, stem, number);
+      std::error_code ec;
+      if (!std::filesystem::exists(dir, ec)) {
+        std::filesystem::create_directories(dir, ec);
+        if (ec) throw CliError("--maps", "cannot create directory " + dir.string() + " (" + ec.message() + ")");
+        created_dir = dir;
+      }
+      for (const frame::NamedMap& m : frame::export_maps(result)) {
+        const std::filesystem::path file = dir / (m.name + ".exr");
+        scenes::io::write_exr_map(batch, file, m.map);
+        files.push_back(file.string());
+      }
+    }
+    if (!a.aliasing.empty()) {
+      size_t measured = 0;
+      for (const frame::AliasingImage& img : result.aliasing) measured += img.measured > 0;
+      if (measured == 0)
+        throw CliError("--aliasing", "no light of this frame has a measured pixel (measured: shadowmap, cascades, "
+                                     "lispsm, frustum-faces, on pixels facing the light)");
+      const std::filesystem::path base(expand_name(a.aliasing, stem, number));
+      for (size_t i = 0; i < result.aliasing.size(); ++i) {
+        const frame::AliasingImage& img = result.aliasing[i];
+        if (img.measured == 0) continue;
+        if (text)
+          std::printf("aliasing %s (%s): max %.3g, p95 %.3g, mean %.3g pixels per texel over %zu lit-facing pixels; "
+                      "storage factor %.3g\n",
+                      result.lights[i].name.c_str(), std::string(shading::tech::to_string(result.lights[i].technique)).c_str(),
+                      double(img.max), double(img.p95), double(img.mean), img.measured, double(img.storage_factor()));
+        std::filesystem::path file = base;
+        if (measured > 1) file.replace_filename(base.stem().string() + "-" + result.lights[i].name + ".png");
+        scenes::io::write_png(batch, file, frame::aliasing_heat_map(img));
+        files.push_back(file.string());
+      }
+    }
+    if (!aovs.empty()) {
+      const std::string file = expand_name(a.aov_out, stem, number);
+      scenes::io::write_exr_image(batch, file, frame::aov_image(*result.surface, aovs));
+      files.push_back(file);
+    }
+    const std::string out = expand_name(a.out, stem, number);
+    scenes::io::write_png(batch, out, result.color);
+    files.push_back(out);
+    batch.commit();
+  } catch (...) {
+    std::error_code ec;
+    if (!created_dir.empty()) std::filesystem::remove(created_dir, ec);  // only if it is still empty
+    throw;
+  }
+  return files;
+}
+
+nlohmann::json frame_json(int number, double total_ms, const frame::Frame& f, const frame::FrameConfig& config) {
+  const frame::FrameStats& s = f.stats;
+  nlohmann::json maps = nlohmann::json::array();
+  for (const frame::LightResult& l : f.lights) {
+    if (!l.shadow) continue;
+    for (const shading::tech::MapRecord& r : l.shadow->maps())
+      maps.push_back({{"light", l.name},
+                      {"technique", r.technique},
+                      {"width", r.target->width()},
+                      {"height", r.target->height()},
+                      {"depth_format", raster::to_string(r.target->format())}});
+  }
+  for (size_t m = 0; m < f.projective.maps.size(); ++m)
+    maps.push_back({{"light", f.projective.map_names[m]},
+                    {"technique", "projective"},
+                    {"width", f.projective.maps[m].width},
+                    {"height", f.projective.maps[m].height},
+                    {"depth_format", f.projective.maps[m].depth_format}});
+  nlohmann::json aliasing = nlohmann::json::array();
+  for (size_t i = 0; i < f.aliasing.size(); ++i)
+    if (f.aliasing[i].measured)
+      aliasing.push_back({{"light", f.lights[i].name},
+                          {"max", f.aliasing[i].max},
+                          {"p95", f.aliasing[i].p95},
+                          {"mean", f.aliasing[i].mean},
+                          {"pixels", f.aliasing[i].measured}});
+  nlohmann::json j = {{"frame", number},
+                      {"total_ms", total_ms},
+                      {"shadow_ms", s.shadow_ms},
+                      {"camera_ms", s.camera_ms},
+                      {"maps_rendered", s.maps_rendered},
+                      {"triangles", s.draws.triangles},
+                      {"setups", s.draws.setups},
+                      {"clipped", s.draws.clipped},
+                      {"culled", s.draws.culled},
+                      {"rejected", s.draws.rejected},
+                      {"width", config.width},
+                      {"height", config.height},
+                      {"pixels", size_t(config.width) * size_t(config.height)},
+                      {"hash", pixel_hash(f.color)},
+                      {"maps", maps},
+                      {"aliasing", aliasing},
+                      {"outputs", nlohmann::json::array()}};
+  if (s.projective.active)
+    j["projective"] = {{"maps_rebuilt", s.projective.maps_rebuilt}, {"maps_reused", s.projective.maps_reused}};
+  return j;
+}
+
+// One job: one scene, its frames, its outputs. Text lines (--stats, aliasing) unless `text` is false.
+nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, const std::string& label) {
+  const Size2 size = parse_size(a.size, "--size");
+  const std::string stem = scene_stem(a.scene);
+  const bool sequence = has_frame_field(a.out, "--out");
+  const std::vector<frame::AovChannel> aovs = parse_aov_list(a.aov, a.aov_out.empty() ? "" : expand_name(a.aov_out, stem, 1));
 
   scenes::Scene scene = load_scene_or_builtin(a.scene);
   frame::FrameConfig config;
@@ -164,7 +319,7 @@ int run_render(const RenderArgs& a) {
   if (!a.filter.empty()) config.filter = scenes::parse_filter(a.filter);
   if (!a.bias.empty()) config.bias = scenes::parse_bias_mode(a.bias);
   if (!a.depth_format.empty()) config.depth_format = scenes::parse_depth_format(a.depth_format);
-  config.map_size = shadow_size;
+  if (a.shadow_size_option && a.shadow_size_option->count()) config.map_size = int(a.shadow_size);
   config.cull_front = a.cull_front;
   if (a.poisson_taps != 0) config.poisson_taps = a.poisson_taps;
   config.poisson_spread = a.poisson_spread;
@@ -180,12 +335,12 @@ int run_render(const RenderArgs& a) {
   config.surface_record = !aovs.empty();
 
   raster::Renderer renderer(a.threads);
-  Progress progress;
   std::optional<frame::Frame> result;  // Frame has no empty state: the last frame rendered
   frame::FrameCache cache;             // projective maps live across frames: only changed casters are rebuilt
+  nlohmann::json frames = nlohmann::json::array();
   for (int i = 0; i < a.frames; ++i) {
     if (a.animate && i > 0) scene = scenes::builtin_scene(a.scene, {double(i) / a.fps});
-    if (a.frames > 1) progress.update("frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames));
+    progress.update(label + (a.frames > 1 ? "frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames) : "rendering"));
     const Stopwatch watch;
     try {
       result.emplace(frame::render_frame(scene, config, renderer, &cache));
@@ -196,7 +351,7 @@ int run_render(const RenderArgs& a) {
       throw CliError(option_for_field(what.substr(0, colon)), what.substr(colon + 2));
     }
     const double total = watch.ms();
-    if (a.stats) {
+    if (text && a.stats) {
       const frame::FrameStats& s = result->stats;
       std::printf(
           "frame %d: total %.3f ms, shadow %.3f ms, camera %.3f ms, maps %zu, triangles %llu, setups %llu, "
@@ -208,71 +363,130 @@ int run_render(const RenderArgs& a) {
         std::printf("frame %d: maps rebuilt %zu, reused %zu\n", i + 1, s.projective.maps_rebuilt,
                     s.projective.maps_reused);
     }
+    frames.push_back(frame_json(i + 1, total, *result, config));
+    // An image sequence writes every frame; otherwise the last frame is the one written.
+    if (sequence || i + 1 == a.frames) frames.back()["outputs"] = write_outputs(a, *result, aovs, i + 1, text);
   }
+  return {{"scene", a.scene}, {"name", stem}, {"frames", frames}};
+}
 
-  // Every output is staged, then committed together: a failure on any of them leaves none of the new files
-  // (and no maps directory this run created).
-  std::filesystem::path created_dir;
+// One job's arguments from `parse` (which runs a parser holding the render options over a command line): one
+// scene, and none of the top-level-only options. Errors are CliErrors on `where`.
+RenderArgs parse_job(const std::string& where, const std::function<void(CLI::App&)>& parse) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App parser{"render job"};
+  add_render_options(parser, args);
   try {
-    scenes::io::WriteBatch batch;  // inside the try: its temporaries are gone before the handler runs
-    if (!a.maps.empty()) {
-      std::error_code ec;
-      if (!std::filesystem::exists(a.maps, ec)) {
-        std::filesystem::create_directories(a.maps, ec);
-        if (ec) throw CliError("--maps", "cannot create directory " + a.maps + " (" + ec.message() + ")");
-        created_dir = a.maps;
-      }
-      for (const frame::NamedMap& m : frame::export_maps(*result))
-        scenes::io::write_exr_map(batch, std::filesystem::path(a.maps) / (m.name + ".exr"), m.map);
+    parse(parser);
+  } catch (const CLI::ParseError& e) {
+    throw CliError(where, e.what());
+  }
+  if (args->scenes.size() != 1) throw CliError(where, "a job renders exactly one scene");
+  if (!args->batch.empty() || !args->shard.empty() || args->json)
+    throw CliError(where, "--batch, --shard and --json belong on the command line, not in a job");
+  args->scene = args->scenes[0];
+  return *args;
+}
+
+// A batch file: one render command line per line (without `shadowlab render`), '#' comments and blank lines
+// skipped; each parsed by the same options as the command line.
+std::vector<std::pair<std::string, RenderArgs>> read_batch(const std::string& file) {
+  std::ifstream in(file);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec) || !in) throw CliError(file, "cannot be read (no such file?)");
+  std::vector<std::pair<std::string, RenderArgs>> jobs;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    const size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    if (jobs.size() >= 100000) throw CliError(file, "more than 100000 jobs");
+    const std::string where = file + ":" + std::to_string(number);
+    jobs.emplace_back(where, parse_job(where, [&](CLI::App& parser) { parser.parse(line, false); }));
+  }
+  if (jobs.empty()) throw CliError(file, "holds no render line");
+  return jobs;
+}
+
+int run_render(const RenderArgs& top) {
+  std::vector<std::pair<std::string, RenderArgs>> jobs;  // where (batch file:line, or "") and arguments
+  if (!top.batch.empty()) {
+    if (!top.scenes.empty()) throw CliError("--batch", "takes its scenes from the file: give no scene arguments");
+    jobs = read_batch(top.batch);
+  } else {
+    if (top.scenes.empty()) throw CliError("render", "no scene given (a file, a built-in name, or --batch FILE)");
+    for (const std::string& scene : top.scenes) {
+      RenderArgs a = top;
+      a.scene = scene;
+      jobs.emplace_back("", a);
     }
-    std::vector<std::pair<std::filesystem::path, raster::ColorTarget>> heat_maps;
-    if (!a.aliasing.empty()) {
-      size_t measured = 0;
-      for (const frame::AliasingImage& img : result->aliasing) measured += img.measured > 0;
-      if (measured == 0)
-        throw CliError("--aliasing", "no light of this frame has a measured pixel (measured: shadowmap, cascades, "
-                                     "lispsm, frustum-faces, on pixels facing the light)");
-      const std::filesystem::path base(a.aliasing);
-      for (size_t i = 0; i < result->aliasing.size(); ++i) {
-        const frame::AliasingImage& img = result->aliasing[i];
-        if (img.measured == 0) continue;
-        std::printf("aliasing %s (%s): max %.3g, p95 %.3g, mean %.3g pixels per texel over %zu lit-facing pixels; "
-                    "storage factor %.3g\n",
-                    result->lights[i].name.c_str(), std::string(shading::tech::to_string(result->lights[i].technique)).c_str(),
-                    double(img.max), double(img.p95), double(img.mean), img.measured, double(img.storage_factor()));
-        std::filesystem::path file = base;
-        if (measured > 1) file.replace_filename(base.stem().string() + "-" + result->lights[i].name + ".png");
-        heat_maps.emplace_back(file, frame::aliasing_heat_map(img));
-      }
+    if (top.scenes.size() > 1) {
+      auto needs_scene = [&](const std::string& pattern, const char* option) {
+        if (!pattern.empty() && !has_scene_field(pattern))
+          throw CliError(option, "several scenes would write to the same file: put {scene} in the name");
+      };
+      needs_scene(top.out, "--out");
+      needs_scene(top.maps, "--maps");
+      needs_scene(top.aliasing, "--aliasing");
+      needs_scene(top.aov_out, "--aov-out");
     }
-    for (const auto& [file, heat] : heat_maps) scenes::io::write_png(batch, file, heat);
-    if (!aovs.empty()) scenes::io::write_exr_image(batch, a.aov_out, frame::aov_image(*result->surface, aovs));
-    scenes::io::write_png(batch, a.out, result->color);
-    batch.commit();
-  } catch (...) {
-    std::error_code ec;
-    if (!created_dir.empty()) std::filesystem::remove(created_dir, ec);  // only if it is still empty
-    throw;
+  }
+  const Shard shard = parse_shard(top.shard, "--shard");
+  // Every job is checked before the first renders.
+  for (const auto& [where, a] : jobs) {
+    try {
+      check_job(a);
+    } catch (const CliError& e) {
+      if (where.empty()) throw;
+      throw CliError(where, e.what());
+    }
+  }
+  Progress progress;
+  nlohmann::json done = nlohmann::json::array();
+  const Stopwatch watch;
+  size_t frames = 0;
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    if (k % shard.count != shard.index) continue;
+    const auto& [where, a] = jobs[k];
+    const std::string label = jobs.size() > 1 ? "job " + std::to_string(k + 1) + "/" + std::to_string(jobs.size()) + " " + a.scene + ": " : "";
+    nlohmann::json j;
+    try {
+      j = render_job(a, !top.json, progress, label);
+    } catch (const CliError& e) {
+      if (where.empty()) throw;
+      throw CliError(where, e.what());
+    }
+    j["index"] = k;
+    j["where"] = where.empty() ? nlohmann::json(nullptr) : nlohmann::json(where);
+    frames += j["frames"].size();
+    done.push_back(std::move(j));
+  }
+  if (top.json) {
+    print_json({{"command", "render"},
+                {"batch", top.batch.empty() ? nlohmann::json(nullptr) : nlohmann::json(top.batch)},
+                {"jobs_total", jobs.size()},
+                {"shard", {{"index", shard.index}, {"count", shard.count}}},
+                {"jobs", done},
+                {"summary", {{"jobs", done.size()}, {"frames", frames}, {"wall_ms", watch.ms()}}}});
   }
   return 0;
 }
 
-}  // namespace
 
-Command add_render_command(CLI::App& parent) {
-  auto args = std::make_shared<RenderArgs>();
-  CLI::App* app = parent.add_subcommand("render", "Render a scene: shadow maps, then the shaded camera view");
-  app->add_option("scene", args->scene, "Scene: a JSON file, a .gltf/.glb file, or a built-in name (see list)")
-      ->required();
+void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& args) {
+  CLI::App* app = &command;
+  app->add_option("scenes", args->scenes,
+                  "Scenes: JSON files, .gltf/.glb files or built-in names (see list); several run in one process");
   app->add_option("--technique", args->technique, "Shadow technique for every light (see list)");
   app->add_option("--filter", args->filter, "Shadow filter for every light (see list)");
   app->add_option("--bias", args->bias, "Bias mode for every light (see list)");
   app->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (default 1280x720)");
   args->shadow_size_option = app->add_option("--shadow-size", args->shadow_size, "Shadow map side in texels");
   app->add_option("--threads", args->threads, "Worker threads (0: inline; default: all cores)");
-  app->add_option("--frames", args->frames, "Render the frame N times (timing); the last one is written");
+  app->add_option("--frames", args->frames,
+                  "Render N frames (timing, --animate); the last is written, or each with a frame field in --out");
   app->add_flag("--stats", args->stats, "Print per-frame timings and triangle counts");
-  app->add_option("--out", args->out, "Output PNG (default frame.png)");
+  app->add_option("--out", args->out,
+                  "Output PNG (default frame.png); {scene} is the scene's name, %04d the frame number (1, 2, ...)");
   app->add_option("--aliasing", args->aliasing,
                   "Also measure each light's aliasing (pixels per shadow-map texel) and write its heat map here (.png)");
   app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
@@ -313,6 +527,31 @@ Command add_render_command(CLI::App& parent) {
   }
   app->add_flag("--animate", args->animate, "Animated built-in scenes (projective): frame K at time K / fps");
   app->add_option("--fps", args->fps, "Frame rate of --animate (default 24)");
+  app->add_flag("--json", args->json, "Print JSON (docs/cli/render.schema.json) instead of text");
+  app->add_option("--batch", args->batch,
+                  "Run every line of FILE as a render command line (no scene arguments), in one process");
+  app->add_option("--shard", args->shard, "I/N: run only the jobs K with K mod N = I; join with render-merge");
+}
+
+}  // namespace
+
+nlohmann::json render_line(const std::vector<std::string>& args, const std::string& where) {
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes a vector last argument first
+  const RenderArgs a = parse_job(where, [&](CLI::App& parser) { parser.parse(reversed); });
+  Progress quiet;  // (a terminal still sees progress)
+  try {
+    check_job(a);
+    return render_job(a, false, quiet, where + ": ");
+  } catch (const CliError& e) {
+    throw CliError(where, e.what());
+  }
+}
+
+Command add_render_command(CLI::App& parent) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "render", "Render scenes: shadow maps, then the shaded camera view (several scenes or --batch in one process)");
+  add_render_options(*app, args);
   return {app, [args] { return run_render(*args); }};
 }
 

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/cli_common.h"
+#include "cli/json_output.h"
 #include "raster/renderer.h"
 #include "raster/target.h"
 #include "scenes/io/io_error.h"
@@ -36,10 +37,12 @@ int main(int argc, char** argv) {
                "shadowlab"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Help for every command");
+  app.set_version_flag("--version", cli::version_line(), "Print the version, git revision and SIMD path, and exit");
   std::vector<cli::Command> commands = {cli::add_render_command(app), cli::add_shadowmap_command(app),
                                         cli::add_inspect_command(app), cli::add_diff_command(app),
                                         cli::add_eval_command(app),    cli::add_eval_merge_command(app),
-                                        cli::add_list_command(app)};
+                                        cli::add_list_command(app),    cli::add_render_merge_command(app),
+                                        cli::add_check_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

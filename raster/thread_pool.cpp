@@ -2,16 +2,25 @@
 #include "raster/thread_pool.h"
 
 #include <algorithm>
+#include <memory>
 #include <thread>
 
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 namespace raster {
 
 struct ThreadPool::Impl {
-  explicit Impl(int n) : arena(n) {}
+  // More threads than cores is allowed (a user oversubscribing on purpose): oneTBB's worker limit, by default
+  // the core count, is raised for this pool's lifetime so the request is honoured instead of warned about.
+  explicit Impl(int n)
+      : limit(n > hardware_threads() ? std::make_unique<tbb::global_control>(
+                                           tbb::global_control::max_allowed_parallelism, size_t(n))
+                                     : nullptr),
+        arena(n) {}
+  std::unique_ptr<tbb::global_control> limit;
   tbb::task_arena arena;
 };
 

@@ -142,7 +142,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     ResolvedLight& r = resolved[i];
     LightResult lr;
-    lr.name = "light" + std::to_string(i) + "-" + scene.lights[i].name;
+    lr.name = name_stem("light" + std::to_string(i), scene.lights[i].name);
     lr.technique = r.config.technique;
     const tech::TechniqueImpl* impl = tech::find_impl(r.config.technique);
     if (!impl) throw FrameError("lights[" + std::to_string(i) + "].shadow.technique: " +

@@ -1,6 +1,7 @@
 // Light and shadow-setting resolution for the frame renderer (see frame_lights.h).
 #include "scenes/frame/frame_lights.h"
 
+#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -8,6 +9,14 @@
 #include <glm/trigonometric.hpp>
 
 namespace frame {
+
+std::string name_stem(const std::string& prefix, const std::string& name) {
+  std::string part;
+  for (char c : name) part += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '-';
+  while (!part.empty() && part.back() == '-') part.pop_back();
+  while (!part.empty() && part.front() == '-') part.erase(part.begin());
+  return part.empty() ? prefix : prefix + "-" + part;
+}
 
 namespace {
 

@@ -2,11 +2,16 @@
 // the light as the techniques see it (LightDesc) and its merged, checked shadow settings (ShadowConfig).
 #pragma once
 #include <cstddef>
+#include <string>
 
 #include "scenes/frame/frame.h"
 #include "shading/lighting.h"
 
 namespace frame {
+
+// A file-name part for `prefix` + "-" + `name`: characters other than letters, digits, '-' and '_' become '-',
+// and an empty (or all-punctuation) name adds nothing, so a stem never ends in '-' ("light0", "light1-sun").
+std::string name_stem(const std::string& prefix, const std::string& name);
 
 struct ResolvedLight {
   shading::Light light;

@@ -1,6 +1,7 @@
 // Projective maps for a frame: settings, casters, the cache and the receivers' overlap lists (see
 // frame_projective.h).
 #include "scenes/frame/frame_projective.h"
+#include "scenes/frame/frame_lights.h"
 
 #include <algorithm>
 #include <cctype>
@@ -37,12 +38,6 @@ tech::Box instance_box(const scenes::Aabb& mesh_box, const glm::mat4& m) {
     b.min = glm::min(b.min, w), b.max = glm::max(b.max, w);
   }
   return b;
-}
-
-std::string file_stem(const std::string& s) {
-  std::string out;
-  for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '-';
-  return out;
 }
 
 tech::ProjectiveLight projector_of(const scenes::Light& l) {
@@ -194,8 +189,9 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const P
         e.encoding = tech::info(tech::Technique::projective).encoding;
         pf.maps.push_back(std::move(e));
         const std::string object_name = obj < scene.objects.size() ? scene.objects[obj] : "object";
-        pf.map_names.push_back(file_stem("light" + std::to_string(li) + "-" + light.name + "-caster" +
-                                         std::to_string(obj) + "-" + object_name));
+        pf.map_names.push_back(name_stem(name_stem("light" + std::to_string(li), light.name) + "-caster" +
+                                             std::to_string(obj),
+                                         object_name));
       }
       if (!map->frustum.valid) continue;
       AppliedCaster c;

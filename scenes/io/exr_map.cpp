@@ -134,13 +134,13 @@ void write_exr_map(WriteBatch& batch, const std::filesystem::path& path, const E
   });
 }
 
-ExrMap read_exr_map(const std::filesystem::path& path) {
+ExrMap read_exr_map(const std::filesystem::path& path, const std::string& channel) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw IoError(path, "no such file");
   try {
     Imf::InputFile in(path.c_str());
     const Imf::Header& h = in.header();
-    if (!h.channels().findChannel("Z")) throw IoError(path, "no Z channel");
+    if (!h.channels().findChannel(channel)) throw IoError(path, "no " + channel + " channel");
     const Imath::Box2i dw = h.dataWindow();
     ExrMap m;
     m.width = dw.max.x - dw.min.x + 1;
@@ -153,14 +153,17 @@ ExrMap read_exr_map(const std::filesystem::path& path) {
     char* base = reinterpret_cast<char*>(top_first.data()) - ptrdiff_t(dw.min.x) * ptrdiff_t(sizeof(float)) -
                  ptrdiff_t(dw.min.y) * ptrdiff_t(w * sizeof(float));
     Imf::FrameBuffer fb;
-    fb.insert("Z", Imf::Slice(Imf::FLOAT, base, sizeof(float), w * sizeof(float), 1, 1, 1.0));
+    fb.insert(channel, Imf::Slice(Imf::FLOAT, base, sizeof(float), w * sizeof(float), 1, 1, 1.0));
     in.setFrameBuffer(fb);
     in.readPixels(dw.min.y, dw.max.y);
     for (size_t r = 0; r < size_t(m.height); ++r)
       std::copy_n(top_first.data() + r * w, w, m.z.data() + (size_t(m.height) - 1 - r) * w);
 
-    if (Imf::hasWorldToCamera(h)) m.world_to_camera = to_glm(Imf::worldToCamera(h));
-    if (Imf::hasWorldToNDC(h)) m.world_to_ndc = to_glm(Imf::worldToNDC(h));
+    m.channel = channel;
+    m.has_world_to_camera = Imf::hasWorldToCamera(h);
+    m.has_world_to_ndc = Imf::hasWorldToNDC(h);
+    if (m.has_world_to_camera) m.world_to_camera = to_glm(Imf::worldToCamera(h));
+    if (m.has_world_to_ndc) m.world_to_ndc = to_glm(Imf::worldToNDC(h));
     if (auto* a = find<Imf::StringAttribute>(h, kTechnique)) m.technique = a->value();
     if (auto* a = find<Imf::StringAttribute>(h, kDepthFormat)) m.depth_format = a->value();
     m.encoding.clear();
@@ -191,6 +194,19 @@ ExrMap read_exr_map(const std::filesystem::path& path) {
     return m;
   } catch (const IoError&) {
     throw;
+  } catch (const std::exception& e) {
+    throw IoError(path, e.what());
+  }
+}
+
+std::vector<std::string> exr_channel_names(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw IoError(path, "no such file");
+  try {
+    Imf::InputFile in(path.c_str());
+    std::vector<std::string> names;
+    for (auto c = in.header().channels().begin(); c != in.header().channels().end(); ++c) names.emplace_back(c.name());
+    return names;
   } catch (const std::exception& e) {
     throw IoError(path, e.what());
   }

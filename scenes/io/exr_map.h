@@ -41,6 +41,10 @@ struct ExrMap {
   std::string depth_format;               // d16, d24 or d32f: the depth buffer the map was rendered into
   std::string encoding = "window-depth";  // window-depth, radial-distance, ...
   std::vector<MapPass> passes;
+  // Read back only: the channel the values came from, and whether the file carried each matrix (a map from
+  // another renderer may not: the matrices then stay identity and are reported as unset).
+  std::string channel = "Z";
+  bool has_world_to_camera = false, has_world_to_ndc = false;
 
   float at(int x, int y) const { return z[size_t(y) * size_t(width) + size_t(x)]; }
 };
@@ -59,9 +63,12 @@ void write_exr_map(const std::filesystem::path& path, const ExrMap& map);
 // The same, staged in `batch` (it replaces `path` when the batch commits).
 void write_exr_map(WriteBatch& batch, const std::filesystem::path& path, const ExrMap& map);
 
-// Reads a map written by write_exr_map (or any scanline or tiled EXR with a `Z` channel: missing shadowlab
-// attributes read as empty strings and identity matrices). Throws IoError when the file cannot be read, has no
-// `Z` channel, or names passes whose attributes are missing.
-ExrMap read_exr_map(const std::filesystem::path& path);
+// Reads a map written by write_exr_map (or any scanline or tiled EXR with the channel `channel`, of any pixel
+// type, converted to float: missing shadowlab attributes read as empty strings and identity matrices). Throws
+// IoError when the file cannot be read, has no such channel, or names passes whose attributes are missing.
+ExrMap read_exr_map(const std::filesystem::path& path, const std::string& channel = "Z");
+
+// The channel names of an EXR file, in the file's (alphabetical) order. Throws IoError.
+std::vector<std::string> exr_channel_names(const std::filesystem::path& path);
 
 }  // namespace scenes::io

@@ -1,5 +1,6 @@
 // Reading an image through OpenImageIO into an owned Texture2D.
 #include "scenes/io/material_texture.h"
+#include "scenes/io/quiet_stderr.h"
 
 #include <OpenImageIO/imageio.h>
 #include <fcntl.h>
@@ -25,28 +26,6 @@ void expand(const T* p, int n, T one, T out[4]) {
     default: out[0] = p[0], out[1] = p[1], out[2] = p[2], out[3] = p[3]; break;
   }
 }
-
-// Sends stderr to /dev/null while it lives. libpng (inside OpenImageIO) prints its own "libpng error: ..." line
-// on a broken file before OpenImageIO returns the same error to us; the caller reports it once, in one line.
-class QuietStderr {
- public:
-  QuietStderr() {
-    std::fflush(stderr);
-    saved_ = ::dup(2);
-    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
-    if (null >= 0) ::close(null);
-  }
-  ~QuietStderr() {
-    std::fflush(stderr);
-    if (saved_ >= 0) ::dup2(saved_, 2), ::close(saved_);
-  }
-  QuietStderr(const QuietStderr&) = delete;
-  QuietStderr& operator=(const QuietStderr&) = delete;
-
- private:
-  int saved_ = -1;
-};
 
 }  // namespace
 

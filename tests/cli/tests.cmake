@@ -5,7 +5,11 @@ if(TARGET shadowlab)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/projective_cli_test.cpp)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/eval_cli_test.cpp)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/eval_html_browser_test.cpp)
+  list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/cli_scripting_test.cpp)
   list(APPEND SHADOWLAB_TEST_DEFINITIONS SHADOWLAB_CLI="$<TARGET_FILE:shadowlab>")
   find_package(nlohmann_json CONFIG REQUIRED)
-  list(APPEND SHADOWLAB_TEST_LIBS shadowlab::io shadowlab::scenes nlohmann_json::nlohmann_json)
+  # valijson (Debian libvalijson-dev, header-only) checks the --json documents against docs/cli/*.schema.json.
+  find_package(valijson CONFIG REQUIRED)
+  list(APPEND SHADOWLAB_TEST_LIBS shadowlab::io shadowlab::scenes nlohmann_json::nlohmann_json valijson
+       OpenImageIO::OpenImageIO)
 endif()

@@ -1,0 +1,58 @@
+// Channel choice and image reading for inspect, diff and check (see image_input.h).
+#include "cli/image_input.h"
+
+#include <algorithm>
+#include <cstdint>
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include "cli/cli_common.h"
+#include "scenes/io/quiet_stderr.h"
+
+namespace cli {
+
+ImageKind image_kind(const std::string& file) {
+  const std::string e = lower_extension(file);
+  if (e != ".exr" && e != ".png") throw CliError(file, "expected an .exr depth map or a .png frame");
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw CliError(file, "no such file");
+  return e == ".exr" ? ImageKind::exr : ImageKind::png;
+}
+
+ChannelChoice choose_depth_channel(const std::vector<std::string>& channels, const std::string& requested,
+                                   const std::string& file) {
+  auto has = [&](const std::string& n) { return std::find(channels.begin(), channels.end(), n) != channels.end(); };
+  std::string list;
+  for (const std::string& c : channels) list += (list.empty() ? "" : ", ") + c;
+  if (!requested.empty()) {
+    if (!has(requested)) throw CliError(file, "has no channel '" + requested + "' (channels: " + list + ")");
+    return {requested, "asked for"};
+  }
+  if (channels.size() == 1) return {channels[0], "the only channel"};
+  if (has("Z")) return {"Z", "named Z"};
+  for (const std::string& c : channels)
+    if (c.size() > 2 && c.compare(c.size() - 2, 2, ".Z") == 0) return {c, "a depth layer's Z"};
+  if (has("R")) return {"R", "red, the first colour channel"};
+  if (has("Y")) return {"Y", "luminance"};
+  throw CliError(file, "no depth channel among " + list + " (choose one with --channel)");
+}
+
+OIIO::ImageBuf read_image(const std::string& file) {
+  const scenes::io::QuietStderr quiet;  // libpng's own line on a broken file; ours follows
+  OIIO::ImageBuf buf(file);
+  // The header first: a file that claims an absurd size is refused before anything is allocated.
+  const OIIO::ImageSpec& spec = buf.spec();
+  if (buf.has_error()) throw CliError(file, buf.geterror());
+  if (spec.width < 1 || spec.height < 1 || spec.width > 65536 || spec.height > 65536 ||
+      uint64_t(spec.width) * uint64_t(spec.height) * uint64_t(std::max(spec.nchannels, 1)) > (uint64_t(1) << 30))
+    throw CliError(file, "image size " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
+                             std::to_string(spec.nchannels) + " channels is beyond what inspect and diff read");
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
+    std::string why = buf.geterror();
+    if (why.empty()) why = "cannot be read";
+    throw CliError(file, why);
+  }
+  return buf;
+}
+
+}  // namespace cli

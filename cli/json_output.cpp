@@ -1,0 +1,44 @@
+// The version block and JSON printing (see json_output.h).
+#include "cli/json_output.h"
+
+#include <cstdio>
+#include <string>
+
+#include "shadowlab_revision.h"
+
+#ifndef SHADOWLAB_VERSION
+#define SHADOWLAB_VERSION "unknown"
+#endif
+
+namespace cli {
+
+namespace {
+
+// The SIMD path the pipeline's stages were compiled for (raster/simd/vec.h chooses at compile time).
+const char* simd_path() {
+#if defined(__AVX2__)
+  return "avx2";
+#else
+  return "scalar";
+#endif
+}
+
+}  // namespace
+
+nlohmann::json version_json() {
+  return {{"name", "shadowlab"}, {"version", SHADOWLAB_VERSION}, {"revision", SHADOWLAB_REVISION}, {"simd", simd_path()}};
+}
+
+std::string version_line() {
+  return std::string("shadowlab ") + SHADOWLAB_VERSION + " (revision " + SHADOWLAB_REVISION + ", SIMD path " +
+         simd_path() + ")";
+}
+
+void print_json(nlohmann::json doc) {
+  doc["shadowlab"] = version_json();
+  const std::string text = doc.dump(2) + "\n";
+  std::fwrite(text.data(), 1, text.size(), stdout);
+  std::fflush(stdout);
+}
+
+}  // namespace cli

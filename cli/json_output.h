@@ -1,0 +1,17 @@
+// `--json` output shared by render, inspect, diff, list and check: one JSON document on stdout, validated in the
+// tests against the command's schema in docs/cli/ (valijson), and the version block every document carries.
+#pragma once
+#include <nlohmann/json.hpp>
+
+namespace cli {
+
+// {"name": "shadowlab", "version": ..., "revision": ..., "simd": ...}: what produced a document or a golden.
+nlohmann::json version_json();
+
+// The version line of `shadowlab --version`.
+std::string version_line();
+
+// Prints `doc` (with "shadowlab": version_json() added) to stdout, indented, with a final newline.
+void print_json(nlohmann::json doc);
+
+}  // namespace cli

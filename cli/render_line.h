@@ -1,0 +1,15 @@
+// One render job run from inside another command (`check`): the same options, checks, frames and outputs as
+// `shadowlab render`, given as a command line's words.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace cli {
+
+// Renders `args` (the words after `shadowlab render`: one scene and options) and returns the job as `render
+// --json` describes it (scene, name, frames with their outputs). Errors are CliErrors on `where`.
+nlohmann::json render_line(const std::vector<std::string>& args, const std::string& where);
+
+}  // namespace cli

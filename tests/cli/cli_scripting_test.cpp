@@ -1,0 +1,290 @@
+// End-to-end tests of the command line as scripts and CI use it (issue 18): every --json document validated
+// against its schema in docs/cli/ with valijson (and a broken document refused, so the check can fail); diff's
+// metrics, --fail-over and --diff-out; inspect on EXRs written by oiiotool (channels R, Y, depth.Z); the golden
+// workflow of `check` failing on a one-pixel change and passing after --update; batches equal to separate runs;
+// shards whose merge equals the unsharded run; image sequences; --version; the README's quick start as written.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <valijson/adapters/nlohmann_json_adapter.hpp>
+#include <valijson/schema.hpp>
+#include <valijson/schema_parser.hpp>
+#include <valijson/validation_results.hpp>
+#include <valijson/validator.hpp>
+
+#include "tests/cli/cli_run.h"
+#include "tests/support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using testsupport::Outcome;
+using testsupport::shadowlab;
+
+// The problems valijson finds in `doc` against docs/cli/NAME.schema.json (empty: valid).
+std::string schema_problems(const std::string& name, const nlohmann::json& doc) {
+  const nlohmann::json schema_doc =
+      nlohmann::json::parse(testsupport::slurp(fs::path(SHADOWLAB_SOURCE_DIR) / "docs/cli" / (name + ".schema.json")));
+  valijson::Schema schema;
+  valijson::SchemaParser parser;
+  valijson::adapters::NlohmannJsonAdapter schema_adapter(schema_doc);
+  parser.populateSchema(schema_adapter, schema);
+  valijson::Validator validator;
+  valijson::ValidationResults results;
+  valijson::adapters::NlohmannJsonAdapter target(doc);
+  if (validator.validate(schema, target, &results)) return "";
+  std::string out;
+  valijson::ValidationResults::Error e;
+  while (results.popError(e)) {
+    std::string path;
+    for (const std::string& p : e.context) path += p;
+    out += path + ": " + e.description + "\n";
+  }
+  return out.empty() ? "invalid" : out;
+}
+
+// Runs `args` (with --json) and returns its document, checked against the schema `name`.
+nlohmann::json json_run(const fs::path& dir, const std::string& args, const std::string& name, int code = 0) {
+  const Outcome r = shadowlab(dir, args);
+  EXPECT_EQ(r.code, code) << args << "\n" << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out, nullptr, false);
+  EXPECT_FALSE(doc.is_discarded()) << args << "\n" << r.out;
+  if (doc.is_discarded()) return {};
+  EXPECT_EQ(schema_problems(name, doc), "") << args;
+  return doc;
+}
+
+bool have_oiiotool() { return std::system("command -v oiiotool >/dev/null 2>&1") == 0; }
+
+// Changes one pixel of a PNG (its first channel by 0.5), through OpenImageIO.
+void change_one_pixel(const fs::path& png, int x, int y) {
+  OIIO::ImageBuf img(png.string());
+  ASSERT_TRUE(img.read(0, 0, true, OIIO::TypeDesc::UINT8));
+  float v[4] = {};
+  img.getpixel(x, y, v, 4);
+  v[0] = v[0] > 0.5f ? v[0] - 0.5f : v[0] + 0.5f;
+  img.setpixel(x, y, v, 4);
+  ASSERT_TRUE(img.write(png.string()));
+}
+
+class CliScripting : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = testsupport::temp_dir(std::string("cli_scripting_") +
+                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  }
+  fs::path dir;
+};
+
+TEST_F(CliScripting, EveryJsonDocumentMatchesItsSchema) {
+  const nlohmann::json list = json_run(dir, "list --json", "list");
+  EXPECT_GE(list["techniques"].size(), 8u);
+  const nlohmann::json render =
+      json_run(dir, "render tutorial --size 64x36 --shadow-size 128 --out f.png --maps maps --aliasing heat.png --json",
+               "render");
+  ASSERT_EQ(render["jobs"].size(), 1u);
+  const nlohmann::json& frame = render["jobs"][0]["frames"][0];
+  EXPECT_EQ(frame["pixels"], 64 * 36);
+  EXPECT_EQ(frame["maps"][0]["width"], 128);
+  EXPECT_EQ(frame["outputs"].size(), 3u);  // the map, the heat map, the frame
+  const nlohmann::json inspect = json_run(dir, "inspect maps/light0-sun.exr f.png --json", "inspect");
+  ASSERT_EQ(inspect["files"].size(), 2u);
+  EXPECT_EQ(inspect["files"][0]["channel"], "Z");
+  EXPECT_EQ(inspect["files"][1]["kind"], "frame");
+  json_run(dir, "diff f.png f.png --json", "diff");
+  ASSERT_EQ(shadowlab(dir, "render tutorial --size 64x36 --shadow-size 128 --depth-format d32f --out g.png --maps maps2")
+                .code, 0);
+  const nlohmann::json d = json_run(dir, "diff maps/light0-sun.exr maps2/light0-sun.exr --json", "diff", 1);
+  EXPECT_TRUE(d["failed"].get<bool>());
+  // The validator is no rubber stamp: a document missing a field, or with a wrong type, is refused.
+  nlohmann::json broken = d;
+  broken.erase("pixels");
+  EXPECT_NE(schema_problems("diff", broken), "");
+  broken = d;
+  broken["over"] = "many";
+  EXPECT_NE(schema_problems("diff", broken), "");
+  broken = list;
+  broken["techniques"][0]["lights"][0] = "laser";
+  EXPECT_NE(schema_problems("list", broken), "");
+}
+
+TEST_F(CliScripting, DiffReportsMetricsAndHonoursFailOver) {
+  ASSERT_EQ(shadowlab(dir, "render tutorial --size 64x36 --out a.png").code, 0);
+  fs::copy_file(dir / "a.png", dir / "b.png");
+  change_one_pixel(dir / "b.png", 10, 20);
+  Outcome r = shadowlab(dir, "diff a.png b.png");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.out, ::testing::HasSubstr("over tolerance 0: 1 of 2304 pixels"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("largest difference at x 10, y 20"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("PSNR [0-9.]+ dB"));
+  EXPECT_EQ(shadowlab(dir, "diff a.png b.png --fail-over 1").code, 0);
+  EXPECT_EQ(shadowlab(dir, "diff a.png b.png --fail-over 0.01%").code, 1);  // 1 of 2304 is 0.043 %
+  EXPECT_EQ(shadowlab(dir, "diff a.png b.png --fail-over 0.05%").code, 0);
+  EXPECT_EQ(shadowlab(dir, "diff a.png b.png --tolerance 0.6").code, 0);
+  const nlohmann::json j = json_run(dir, "diff a.png b.png --diff-out heat.png --json", "diff", 1);
+  EXPECT_EQ(j["over"], 1);
+  EXPECT_NEAR(j["max"].get<double>(), 0.5, 1.0 / 255);
+  EXPECT_NEAR(j["rmse"].get<double>(), std::sqrt(0.5 * 0.5 / (2304.0 * 3.0)), 1e-3);
+  ASSERT_TRUE(fs::exists(dir / "heat.png"));
+  // The heat map is bright exactly at the changed pixel.
+  OIIO::ImageBuf heat((dir / "heat.png").string());
+  float hot[3], cold[3];
+  heat.getpixel(10, 20, hot, 3);
+  heat.getpixel(11, 20, cold, 3);
+  EXPECT_GT(hot[0] + hot[1] + hot[2], 1.5f);
+  EXPECT_LT(cold[0] + cold[1] + cold[2], 0.1f);
+  testsupport::expect_bad_run(dir, "diff a.png b.png --fail-over 5x", "--fail-over");
+  testsupport::expect_bad_run(dir, "diff a.png b.png --fail-over 101%", "--fail-over");
+}
+
+TEST_F(CliScripting, InspectReadsOtherRenderersExrs) {
+  if (!have_oiiotool()) GTEST_SKIP() << "skipped: oiiotool not found (Debian openimageio-tools)";
+  auto tool = [&](const std::string& args) {
+    return std::system(("cd '" + dir.string() + "' && oiiotool " + args + " >/dev/null 2>&1").c_str());
+  };
+  ASSERT_EQ(tool("--pattern constant:color=0.25 8x4 1 --chnames R -d float -o r.exr"), 0);
+  ASSERT_EQ(tool("--pattern constant:color=12.5 8x4 1 --chnames Y -d half -o y.exr"), 0);
+  ASSERT_EQ(tool("--pattern constant:color=0.9,0.8,0.75 8x4 3 --chnames R,G,depth.Z -d float -o layered.exr"), 0);
+  Outcome r = shadowlab(dir, "inspect r.exr y.exr layered.exr");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("depth channel: R (the only channel)"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("depth channel: Y (the only channel)"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("depth: min 12.5, max 12.5"));  // not clamped to [0, 1]
+  EXPECT_THAT(r.out, ::testing::HasSubstr("coverage: 0.000000 (0 of 32 texels < 1)"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("depth channel: depth.Z (a depth layer's Z)"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("depth: min 0.75, max 0.75"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("worldToCamera: unset"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("technique: unset"));
+  r = shadowlab(dir, "inspect layered.exr --channel R --png dir_of_previews/x.png");
+  EXPECT_EQ(r.code, 2);  // the preview's folder does not exist
+  r = shadowlab(dir, "inspect layered.exr r.exr --png previews --range 0,1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "previews" / "layered.png"));
+  EXPECT_TRUE(fs::exists(dir / "previews" / "r.png"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("colour map viridis"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("range 0 to 1"));
+  testsupport::expect_bad_run(dir, "inspect layered.exr --channel nope", "layered.exr");
+  ASSERT_EQ(tool("--pattern constant:color=0.5,0.5 8x4 2 --chnames G,B -d float -o gb.exr"), 0);
+  testsupport::expect_bad_run(dir, "inspect gb.exr", "gb.exr");  // no depth channel: --channel is suggested
+  EXPECT_THAT(shadowlab(dir, "inspect gb.exr").err, ::testing::HasSubstr("--channel"));
+}
+
+TEST_F(CliScripting, GoldenWorkflowFailsOnOnePixelAndPassesAfterUpdate) {
+  std::ofstream(dir / "manifest.json") << R"({"entries": [
+    {"name": "room", "scene": "tutorial", "args": ["--size", "64x36", "--shadow-size", "128"], "maps": true},
+    {"name": "spot", "scene": "tutorial-spot", "args": ["--size", "48x27"], "tolerance": 0.02}]})";
+  Outcome r = shadowlab(dir, "check manifest.json");
+  EXPECT_EQ(r.code, 2) << r.err;  // no goldens yet
+  EXPECT_THAT(r.err, ::testing::HasSubstr("--update"));
+  r = shadowlab(dir, "check manifest.json --update");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "goldens" / "room.png"));
+  EXPECT_TRUE(fs::exists(dir / "goldens" / "room-maps" / "light0-sun.exr"));
+  const nlohmann::json pass = json_run(dir, "check manifest.json --json", "check");
+  EXPECT_EQ(pass["summary"]["passed"], 2);
+  change_one_pixel(dir / "goldens" / "room.png", 5, 5);
+  r = shadowlab(dir, "check manifest.json");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("room +differs"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("spot +pass"));
+  EXPECT_TRUE(fs::exists(dir / "check-diffs" / "room.diff.png"));
+  ASSERT_EQ(shadowlab(dir, "check manifest.json --update").code, 0);
+  EXPECT_EQ(shadowlab(dir, "check manifest.json").code, 0);
+  // A bad manifest is an error naming the field.
+  std::ofstream(dir / "bad.json") << R"({"entries": [{"name": "x", "scene": "tutorial", "args": ["--out", "y.png"]}]})";
+  testsupport::expect_bad_run(dir, "check bad.json", "bad.json: entries[0].args");
+  std::ofstream(dir / "bad2.json") << R"({"entries": [{"name": "../x", "scene": "tutorial"}]})";
+  testsupport::expect_bad_run(dir, "check bad2.json", "bad2.json: entries[0].name");
+}
+
+// Jobs of a batch file render in one process exactly what separate runs render; its shards, merged, are the
+// unsharded run's document.
+TEST_F(CliScripting, BatchesAndShards) {
+  const std::vector<std::string> lines = {
+      "tutorial --size 48x27 --out b_tutorial.png", "duel --size 48x27 --filter pcf --out b_duel.png",
+      "tutorial-spot --size 48x27 --out b_spot.png", "# a comment", "",
+      "projective --size 48x27 --animate --frames 2 --out b_proj_%d.png"};
+  {
+    std::ofstream f(dir / "jobs.txt");
+    for (const std::string& l : lines) f << l << "\n";
+  }
+  const nlohmann::json whole = json_run(dir, "render --batch jobs.txt --json", "render");
+  ASSERT_EQ(whole["jobs"].size(), 4u);
+  EXPECT_EQ(whole["jobs"][1]["where"], "jobs.txt:2");
+  EXPECT_EQ(whole["jobs"][3]["frames"][1]["outputs"][0], "b_proj_2.png");
+  for (const std::string& l : {lines[0], lines[1], lines[2]}) {
+    const std::string separate = std::regex_replace(l, std::regex("--out b_"), "--out s_");
+    ASSERT_EQ(shadowlab(dir, "render " + separate).code, 0);
+  }
+  for (const char* name : {"tutorial", "duel", "spot"})
+    EXPECT_EQ(testsupport::slurp(dir / ("b_" + std::string(name) + ".png")),
+              testsupport::slurp(dir / ("s_" + std::string(name) + ".png")))
+        << name;
+  const nlohmann::json s0 = json_run(dir, "render --batch jobs.txt --shard 0/2 --json", "render");
+  const nlohmann::json s1 = json_run(dir, "render --batch jobs.txt --shard 1/2 --json", "render");
+  EXPECT_EQ(s0["jobs"].size(), 2u);
+  std::ofstream(dir / "s0.json") << s0.dump();
+  std::ofstream(dir / "s1.json") << s1.dump();
+  const nlohmann::json merged = json_run(dir, "render-merge s1.json s0.json", "render");
+  // Equal but for the times.
+  auto strip = [](nlohmann::json jobs) {
+    for (auto& j : jobs)
+      for (auto& f : j["frames"])
+        for (const char* t : {"total_ms", "shadow_ms", "camera_ms"}) f.erase(t);
+    return jobs;
+  };
+  EXPECT_EQ(strip(merged["jobs"]), strip(whole["jobs"]));
+  testsupport::expect_bad_run(dir, "render-merge s0.json", "s0.json");      // a shard is missing
+  testsupport::expect_bad_run(dir, "render-merge s0.json s0.json", "s0.json");  // one shard twice
+  std::ofstream(dir / "badjobs.txt") << "tutorial --out ok.png\nduel --filter soft --out x.png\n";
+  testsupport::expect_bad_run(dir, "render --batch badjobs.txt", "badjobs.txt:2", "ok.png");  // nothing rendered
+  testsupport::expect_bad_run(dir, "render tutorial duel --out same.png", "--out", "same.png");
+}
+
+TEST_F(CliScripting, SequencesVersionNamesAndThreads) {
+  Outcome r = shadowlab(dir, "render tutorial --size 32x18 --frames 3 --out 'seq_%02d.png'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"seq_01.png", "seq_02.png", "seq_03.png"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
+  testsupport::expect_bad_run(dir, "render tutorial --out 'x_%q.png'", "--out");
+  testsupport::expect_bad_run(dir, "render tutorial --out 'x_%d_%d.png'", "--out");
+  r = shadowlab(dir, "--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_THAT(r.out, ::testing::MatchesRegex("shadowlab [0-9.]+ \\(revision [0-9a-z-]+, SIMD path [a-z0-9]+\\)\n"));
+  // An unnamed light's map is light0.exr, never "light0-.exr".
+  std::ofstream(dir / "unnamed.json") << R"({"objects": [{"primitive": {"type": "plane", "size": [4, 4]}}],
+    "lights": [{"type": "directional", "direction": [0, -1, 0]}]})";
+  ASSERT_EQ(shadowlab(dir, "render unnamed.json --size 16x16 --out u.png --maps umaps").code, 0);
+  EXPECT_TRUE(fs::exists(dir / "umaps" / "light0.exr"));
+  // More threads than cores: honoured without a word.
+  r = shadowlab(dir, "render tutorial --size 32x18 --threads 64 --out t.png");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.err, "");
+}
+
+// The README's quick start, run as written (the binary path mapped to this build's).
+TEST_F(CliScripting, ReadmeQuickStartRunsAsWritten) {
+  const std::string readme = testsupport::slurp(fs::path(SHADOWLAB_SOURCE_DIR) / "README.md");
+  const size_t at = readme.find("## Quick start");
+  ASSERT_NE(at, std::string::npos);
+  const size_t open = readme.find("```sh\n", at), close = readme.find("```\n", open + 6);
+  ASSERT_NE(open, std::string::npos);
+  const std::string block = readme.substr(open + 6, close - open - 6);
+  ASSERT_THAT(block, ::testing::HasSubstr("build/cli/shadowlab"));
+  fs::create_directories(dir / "build" / "cli");
+  fs::create_symlink(SHADOWLAB_CLI, dir / "build" / "cli" / "shadowlab");
+  std::ofstream(dir / "quickstart.sh") << "set -e\n" << block;
+  const int status = std::system(("cd '" + dir.string() + "' && bash quickstart.sh >out.txt 2>err.txt").c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 0) << testsupport::slurp(dir / "err.txt");
+  EXPECT_THAT(testsupport::slurp(dir / "out.txt"), ::testing::HasSubstr("exit "));
+}
+
+}  // namespace
