@@ -4,7 +4,8 @@
 # libraries and llvmpipe only, checks bit-identical maps (--verify) at each thread count, then runs the depth and
 # PCF benchmarks at each count with speed-up and efficiency tables. Everything goes to OUT_DIR:
 #   sh run.sh [OUT_DIR]          (default: $OUT, else ./out next to this script)
-# THREADS=1,2,4,8,16 (default) picks the counts, REPS=5 the repetitions per case; SMOKE=1 runs a quick check
+# THREADS=1,2,4,8,16 (default) picks the counts, REPS=7 the repetitions per case (the two renderers' repetitions
+# interleaved, as in README's table); SMOKE=1 runs a quick check
 # only (small workloads, 1 and 2 threads, with the loader's trace in OUT_DIR/ld_debug.log).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
@@ -12,7 +13,8 @@ out=${1:-${OUT:-$here/out}}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 threads=${THREADS:-1,2,4,8,16}
-reps=${REPS:-5}
+reps=${REPS:-7}
+interleave=--benchmark_enable_random_interleaving=true
 
 tmp=$(mktemp -d /tmp/shadowlab-bundle.XXXXXX)
 if xz --version > /dev/null 2>&1; then
@@ -63,10 +65,10 @@ for n in $(echo "$threads" | tr ',' ' '); do
   cat "$out/verify_t$n.log"
 done
 echo "== depth-only pass"
-"$b/bin/shadowlab_bench_depth" --scaling "$threads" --repetitions "$reps" --json-dir "$out" > "$out/depth.log" 2>&1 || status=1
+"$b/bin/shadowlab_bench_depth" --scaling "$threads" --repetitions "$reps" "$interleave" --json-dir "$out" > "$out/depth.log" 2>&1 || status=1
 sed -n '/^Scaling/,$p' "$out/depth.log"
 echo "== PCF pass"
-"$b/bin/shadowlab_bench_pcf" --scaling "$threads" --repetitions "$reps" --json-dir "$out" > "$out/pcf.log" 2>&1 || status=1
+"$b/bin/shadowlab_bench_pcf" --scaling "$threads" --repetitions "$reps" "$interleave" --json-dir "$out" > "$out/pcf.log" 2>&1 || status=1
 sed -n '/^Scaling/,$p' "$out/pcf.log"
 rm -rf "$tmp"
 echo "done: $([ $status = 0 ] && echo all passed || echo 'something FAILED (see the logs)'), logs and JSON in $out"
