@@ -4,6 +4,7 @@
 #pragma once
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,18 @@ struct Options {
   int repetitions = 7;
 };
 
+// --scaling [LIST]: runs this very program once per thread count (LIST such as 1,2,4; by default 1, 2, 4, … up to
+// the hardware's threads, and that count itself), each with the other arguments and --threads N, echoes each
+// run's output, and ends with a table of every case at every count: shadowlab and llvmpipe medians, their
+// ratio, and each renderer's speed-up over its own 1-thread time and parallel efficiency (speed-up / threads).
+// --json-dir DIR also writes each run's Google Benchmark JSON (DIR/<program>_t<N>.json) and the table
+// (DIR/<program>_scaling.json). Returns the exit code when --scaling was given, nullopt otherwise.
+std::optional<int> run_scaling(int argc, char** argv);
+// What a program prints per case for run_scaling to collect: medians in ms, and shadowlab's draw split
+// (Renderer::last_timings, medians over the repetitions).
+void print_scaling_row(const std::string& case_name, int threads, double shadowlab_ms, double llvmpipe_ms,
+                       double front_ms, double back_ms, double clear_cpu_ms);
+
 // Reads and removes shadowlab's own flags from argv, then initialises Google Benchmark with the rest.
 Options parse_options(int& argc, char** argv);
 // Sets one iteration per repetition, the repetition count, manual timing in milliseconds and min / max
@@ -35,9 +48,12 @@ class MedianReporter : public benchmark::ConsoleReporter {
   void ReportRuns(const std::vector<Run>& runs) override;
   // Milliseconds, 0 when the benchmark did not run.
   double median_ms(const std::string& name) const;
+  // The median of a user counter (0 when absent).
+  double median_counter(const std::string& name, const std::string& counter) const;
 
  private:
   std::map<std::string, double> median_ms_;
+  std::map<std::string, std::map<std::string, double>> counters_;
 };
 
 // Loads every triangle of a glTF file (through scenes/) and maps it into clip space with an orthographic

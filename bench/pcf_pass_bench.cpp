@@ -3,7 +3,9 @@
 // running the same GLSL (raster/reference: pixel (x, y) reads p = ((x+0.5)/W, (y+0.5)/H) with
 // ref = (p.s + p.t)/2, the taps at p + disk[i] · 2 texels, averaged; output grey). A third pass with no lookup (grey = ref) shows what
 // the pipeline itself costs each renderer: rasterizing, shading 2×2 quads and writing RGBA8.
-//   shadowlab_bench_pcf [--threads N] [--smoke] [--no-llvmpipe] [benchmark flags]
+// --scaling runs the whole program at 1, 2, 4, … threads (bench_common.h).
+//   shadowlab_bench_pcf [--threads N] [--smoke] [--no-llvmpipe] [--repetitions R] [--scaling [LIST]]
+//                       [--json-dir DIR] [benchmark flags]
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -78,6 +80,7 @@ struct PcfPassShader {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (const auto status = bench::run_scaling(argc, argv)) return *status;
   bench::Options opt = bench::parse_options(argc, argv);
   const int W = opt.smoke ? 480 : 1920, H = opt.smoke ? 270 : 1080;
 
@@ -122,6 +125,9 @@ int main(int argc, char** argv) {
         renderer.draw(raster::RenderTargets{nullptr, &color}, raster::DrawState{}, shader, std::span<const glm::vec4>(tri));
         st.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       }
+      const raster::DrawTimings& dt = renderer.last_timings();  // one iteration per repetition
+      st.counters["front_ms"] = dt.front_ms;
+      st.counters["back_ms"] = dt.back_ms;
     });
     bench::configure(b, opt);
     if (gl) {
@@ -146,6 +152,11 @@ int main(int argc, char** argv) {
     const double sl = reporter.median_ms(std::string(c) + "/shadowlab");
     const double lp = reporter.median_ms(std::string(c) + "/llvmpipe");
     std::printf("%-16s %12.2f %12.2f %7.2fx\n", c, sl, lp, sl > 0 && lp > 0 ? lp / sl : 0.0);
+  }
+  for (const char* c : {"no_lookup", "pcf_1_tap", "poisson_16_taps"}) {
+    const std::string n = std::string(c) + "/shadowlab";
+    bench::print_scaling_row(c, renderer.threads(), reporter.median_ms(n), reporter.median_ms(std::string(c) + "/llvmpipe"),
+                             reporter.median_counter(n, "front_ms"), reporter.median_counter(n, "back_ms"), 0.0);
   }
   return 0;
 }

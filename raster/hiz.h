@@ -27,6 +27,13 @@ class TileHiZ {
       for (int i = 0; i < kBlocks; ++i) refresh(d, x0 + i * kBlockSize, y0 + j * kBlockSize);
   }
 
+  // The bounds of a tile just cleared to `z`, without reading it back.
+  void set_all(int32_t x0, int32_t y0, float z) {
+    x0_ = x0, y0_ = y0;
+    for (auto& row : zmax_)
+      for (float& v : row) v = z;
+  }
+
   float farthest(int32_t bx, int32_t by) const {
     return zmax_[(by - y0_) >> kBlockSizeLog2][(bx - x0_) >> kBlockSizeLog2];
   }

@@ -3,6 +3,18 @@
 
 #include <string>
 
+namespace raster {
+
+void Renderer::clear_tiles(DepthTarget& depth, uint32_t raw) {
+  const TileGrid grid = TileGrid::for_size(depth.width(), depth.height());
+  pool_.parallel_for(size_t(grid.count()), [&](size_t k) {
+    const int tx = int(k % size_t(grid.tiles_x)), ty = int(k / size_t(grid.tiles_x));
+    depth.fill(raw, tx << kTileSizeLog2, ty << kTileSizeLog2, kTileSize, kTileSize);
+  });
+}
+
+}  // namespace raster
+
 namespace raster::detail {
 
 void check_draw(const RenderTargets& t, const DrawState& s, size_t vertices, size_t indices) {

@@ -2,9 +2,14 @@
 // indexed triangle draw through the stages — vertex shading, primitive assembly + clipping + setup + binning
 // (front end, in chunks), then tile execution (back end, one tile per task). Every stage is deterministic.
 #pragma once
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -37,6 +42,15 @@ struct RenderTargets {
   ColorTarget* color = nullptr;
 };
 
+// Where the last draw's time went (wall clock on the calling thread, milliseconds): the front end (vertex
+// stage, clipping, setup, binning) and the back end (tile execution, including the clear of each tile that a
+// pending DepthTarget::clear() leaves to the draw); clear_cpu_ms is the time the workers spent clearing tiles,
+// summed over workers (0 when no clear was pending).
+struct DrawTimings {
+  double front_ms = 0, back_ms = 0, clear_cpu_ms = 0;
+  size_t chunks = 0;  // front-end chunks the draw was split into
+};
+
 // Invalid draw input (an index out of range, mismatched targets, a bad viewport). The message says which.
 struct DrawError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
@@ -49,6 +63,7 @@ class Renderer {
 
   int threads() const { return pool_.threads(); }
   ThreadPool& pool() { return pool_; }
+  const DrawTimings& last_timings() const { return timings_; }
 
   // Draws an indexed triangle list (three indices per triangle); `indices` empty means non-indexed
   // (vertices 3i, 3i+1, 3i+2). The shader is copied once per draw (the snapshot), as is the state.
@@ -73,7 +88,11 @@ class Renderer {
     DrawStats stats;
   };
 
+  // Carries out a pending clear of `depth` (the stored value `raw`), one tile per task.
+  void clear_tiles(DepthTarget& depth, uint32_t raw);
+
   ThreadPool pool_;
+  DrawTimings timings_;
   ScratchBuffer post_, win_, codes_;
   std::vector<std::unique_ptr<Chunk>> chunks_;
 };
@@ -81,9 +100,19 @@ class Renderer {
 namespace detail {
 
 inline constexpr size_t kVertexBatch = 8192;
-inline constexpr size_t kChunkTriangles = 8192;
-inline constexpr size_t kChunkVertices = 3 * kChunkTriangles;  // the largest vertex range a chunk shades itself
+// The front end splits a draw into chunks of consecutive triangles, at least kChunksPerWorker per worker so that
+// a draw of few (large) triangles still spreads over every worker, and no larger than kMaxChunkTriangles (the
+// setups of one chunk stay in cache while they are binned) nor smaller than kMinChunkTriangles (each chunk has
+// per-tile counters to sum and walk). The split changes no output: tiles execute the chunks in order.
+inline constexpr size_t kMaxChunkTriangles = 8192;
+inline constexpr size_t kMinChunkTriangles = 256;
+inline constexpr size_t kChunksPerWorker = 4;
 inline constexpr unsigned kInvalidVertex = 1u << 31;
+
+inline size_t chunk_triangles(size_t ntri, int threads) {
+  const size_t chunks = kChunksPerWorker * size_t(std::max(threads, 1));
+  return std::clamp((ntri + chunks - 1) / chunks, kMinChunkTriangles, kMaxChunkTriangles);
+}
 
 void check_draw(const RenderTargets& t, const DrawState& s, size_t vertices, size_t indices);
 
@@ -101,6 +130,9 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     else return ch.depth_bins;
   };
 
+  using Clock = std::chrono::steady_clock;
+  const auto t_start = Clock::now();
+  timings_ = DrawTimings{};
   detail::check_draw(targets, state_in, vertices.size(), indices.size());
   const DrawState state = state_in;  // snapshot
   const Shader shader = shader_in;   // snapshot
@@ -112,7 +144,11 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       make_clip_planes(state.depth_clamp, sp.vp_half_w, sp.vp_center_x, sp.vp_half_h, sp.vp_center_y);
   const size_t nv = vertices.size();
   const size_t ntri = indices.empty() ? nv / 3 : indices.size() / 3;
-  if (ntri == 0 || sp.clip.empty()) return DrawStats{.triangles = ntri, .rejected = ntri};
+  if (ntri == 0 || sp.clip.empty()) {
+    if (targets.depth)
+      if (const auto raw = targets.depth->take_pending_clear()) clear_tiles(*targets.depth, *raw);
+    return DrawStats{.triangles = ntri, .rejected = ntri};
+  }
 
   // ---- Vertex stage: the shader per vertex (shader.h: a pure function), then outcodes and window space.
   // The shader runs one vertex at a time; the clip test and viewport transform eight at a time (vertex_batch.h).
@@ -154,7 +190,9 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
 
   // ---- Front end: assembly, clipping, setup, binning, in chunks of consecutive triangles.
   const TileGrid grid = TileGrid::for_size(width, height);
-  const size_t nchunks = (ntri + detail::kChunkTriangles - 1) / detail::kChunkTriangles;
+  const size_t chunk_tris = detail::chunk_triangles(ntri, pool_.threads());
+  const size_t nchunks = (ntri + chunk_tris - 1) / chunk_tris;
+  timings_.chunks = nchunks;
   while (chunks_.size() < nchunks) chunks_.push_back(std::make_unique<Chunk>());
   // One chunk's front end, reading vertex i's outcode and window position at codes[i − base], win[i − base].
   auto front = [&](size_t c, const unsigned* codes, const WindowVertex* win, uint32_t base) {
@@ -164,8 +202,8 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     ch.full_count = 0;
     ch.interp_count = 0;
     ch.stats = DrawStats{};
-    const size_t end = std::min(ntri, (c + 1) * detail::kChunkTriangles);
-    bins.setups.reserve(end - c * detail::kChunkTriangles);
+    const size_t end = std::min(ntri, (c + 1) * chunk_tris);
+    bins.setups.reserve(end - c * chunk_tris);
     // Bins a visible triangle's record: setup_triangle()'s, or a DepthSetup from the batch.
     auto keep = [&](const auto& t) {
       ++ch.stats.setups;
@@ -204,7 +242,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     auto take = [&](SetupResult r, const auto& t) {
       if (count(r)) keep(t);
     };
-    for (size_t i = c * detail::kChunkTriangles; i < end; ++i) {
+    for (size_t i = c * chunk_tris; i < end; ++i) {
       uint32_t idx[3];
       for (int k = 0; k < 3; ++k) {
         idx[k] = indices.empty() ? uint32_t(3 * i + k) : indices[3 * i + k];
@@ -261,7 +299,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   if constexpr (!kShaded) {
     pool_.parallel_for(nchunks, [&](size_t c) {
       Chunk& ch = *chunks_[c];
-      const size_t first = c * detail::kChunkTriangles, end = std::min(ntri, first + detail::kChunkTriangles);
+      const size_t first = c * chunk_tris, end = std::min(ntri, first + chunk_tris);
       uint32_t lo = ~0u, hi = 0;
       for (size_t i = 3 * first; i < 3 * end; ++i) {
         const uint32_t v = indices.empty() ? uint32_t(i) : indices[i];
@@ -274,7 +312,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     for (size_t c = 0; c < nchunks && compact; ++c) {
       const Chunk& ch = *chunks_[c];
       // Out-of-range indices take the whole-draw path, whose front end reports them.
-      compact = ch.range_hi < nv && ch.range_hi - ch.range_lo < detail::kChunkVertices;
+      compact = ch.range_hi < nv && ch.range_hi - ch.range_lo < 3 * chunk_tris;
       shaded += size_t(ch.range_hi - ch.range_lo) + 1;
     }
     if (compact && shaded <= nv + nv / 8) {
@@ -298,7 +336,21 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     });
   }
 
-  // ---- Back end: each tile executes its commands, chunk by chunk, in submission order.
+  // ---- Back end: each tile executes its commands, chunk by chunk, in submission order. A pending clear of the
+  // depth target is taken over here: every tile of the padded target is cleared by the worker that runs it, just
+  // before its commands (tiles outside the draw's rectangle too), so the clear is spread over the workers and
+  // the tile is in cache when its triangles are drawn.
+  const auto t_back = Clock::now();
+  timings_.front_ms = std::chrono::duration<double, std::milli>(t_back - t_start).count();
+  const std::optional<uint32_t> clear_raw = targets.depth ? targets.depth->take_pending_clear() : std::nullopt;
+  std::atomic<int64_t> clear_ns{0};
+  bool tiles_ran = false;
+  auto clear_tile = [&](int tx, int ty) {
+    const auto c0 = Clock::now();
+    targets.depth->fill(*clear_raw, tx << kTileSizeLog2, ty << kTileSizeLog2, kTileSize, kTileSize);
+    clear_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - c0).count(),
+                       std::memory_order_relaxed);
+  };
   DrawStats stats;
   const std::span<const std::unique_ptr<Chunk>> chunks(chunks_.data(), nchunks);
   for (const auto& ch : chunks) stats += ch->stats;
@@ -313,8 +365,16 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   // from LESS and LEQUAL, for depth-only draws (dispatch_depth_only_func).
   dispatch_depth_format(format, [&]<DepthFormat F>() {
     auto run_tiles = [&](auto make_stage, bool use_hiz = false) {
-      pool_.parallel_for(size_t(ntx) * size_t(nty), [&](size_t k) {
-        const int tx = tx0 + int(k % size_t(ntx)), ty = ty0 + int(k / size_t(ntx));
+      tiles_ran = true;
+      // With a clear pending, the tasks cover every tile of the target; otherwise the draw's rectangle's.
+      const int gx0 = clear_raw ? 0 : tx0, gy0 = clear_raw ? 0 : ty0;
+      const int gnx = clear_raw ? grid.tiles_x : ntx, gny = clear_raw ? grid.tiles_y : nty;
+      pool_.parallel_for(size_t(gnx) * size_t(gny), [&](size_t k) {
+        const int tx = gx0 + int(k % size_t(gnx)), ty = gy0 + int(k / size_t(gnx));
+        if (clear_raw) {
+          clear_tile(tx, ty);
+          if (tx < tx0 || tx > tx1 || ty < ty0 || ty > ty1) return;
+        }
         const PixelRect rect{std::max(sp.clip.x0, tx << kTileSizeLog2), std::max(sp.clip.y0, ty << kTileSizeLog2),
                              std::min(sp.clip.x1, ((tx + 1) << kTileSizeLog2) - 1),
                              std::min(sp.clip.y1, ((ty + 1) << kTileSizeLog2) - 1)};
@@ -326,7 +386,8 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
         }
         if (!any) return;
         TileHiZ hiz;  // hierarchical depth, for the stages that use it
-        if (use_hiz) hiz.load(*targets.depth, tx << kTileSizeLog2, ty << kTileSizeLog2);
+        if (use_hiz && clear_raw) hiz.set_all(tx << kTileSizeLog2, ty << kTileSizeLog2, std::bit_cast<float>(*clear_raw));
+        else if (use_hiz) hiz.load(*targets.depth, tx << kTileSizeLog2, ty << kTileSizeLog2);
         for (const auto& chp : chunks) {
           const Chunk& ch = *chp;
           const auto stage = make_stage(ch, hiz);
@@ -359,6 +420,12 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       });
     }
   });
+  if (clear_raw && !tiles_ran)  // no back end ran over the depth target (no depth test): clear it alone
+    pool_.parallel_for(size_t(grid.count()), [&](size_t k) {
+      clear_tile(int(k % size_t(grid.tiles_x)), int(k / size_t(grid.tiles_x)));
+    });
+  timings_.back_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_back).count();
+  timings_.clear_cpu_ms = double(clear_ns.load()) * 1e-6;
   return stats;
 }
 

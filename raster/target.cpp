@@ -55,13 +55,57 @@ DepthTarget::DepthTarget(int width, int height, DepthFormat format)
   clear(1.0f);
 }
 
+DepthTarget::DepthTarget(const DepthTarget& o)
+    : width_(o.width_), height_(o.height_), pitch_(o.pitch_), padded_height_(o.padded_height_), format_(o.format_),
+      storage_(o.storage_.size()) {
+  o.resolve_clear();
+  std::memcpy(storage_.data(), o.storage_.data(), o.storage_.size());
+}
+
+DepthTarget::DepthTarget(DepthTarget&& o) noexcept
+    : width_(o.width_), height_(o.height_), pitch_(o.pitch_), padded_height_(o.padded_height_), format_(o.format_),
+      storage_(std::move(o.storage_)), clear_pending_(o.clear_pending_.load()), clear_raw_(o.clear_raw_) {}
+
+DepthTarget& DepthTarget::operator=(const DepthTarget& o) {
+  if (this != &o) *this = DepthTarget(o);
+  return *this;
+}
+
+DepthTarget& DepthTarget::operator=(DepthTarget&& o) noexcept {
+  width_ = o.width_, height_ = o.height_, pitch_ = o.pitch_, padded_height_ = o.padded_height_;
+  format_ = o.format_;
+  storage_ = std::move(o.storage_);
+  clear_pending_.store(o.clear_pending_.load());
+  clear_raw_ = o.clear_raw_;
+  return *this;
+}
+
 void DepthTarget::clear(float depth) {
-  const uint32_t raw_value = depth_to_raw(depth, format_);
-  const size_t n = size_t(pitch_) * size_t(padded_height_);
-  if (format_ == DepthFormat::d16) {
-    std::fill_n(reinterpret_cast<uint16_t*>(storage_.data()), n, uint16_t(raw_value));
-  } else {
-    std::fill_n(reinterpret_cast<uint32_t*>(storage_.data()), n, raw_value);
+  std::lock_guard lock(clear_mutex_);
+  clear_raw_ = depth_to_raw(depth, format_);
+  clear_pending_.store(true, std::memory_order_release);
+}
+
+std::optional<uint32_t> DepthTarget::take_pending_clear() {
+  std::lock_guard lock(clear_mutex_);
+  if (!clear_pending_.load(std::memory_order_relaxed)) return std::nullopt;
+  clear_pending_.store(false, std::memory_order_release);
+  return clear_raw_;
+}
+
+void DepthTarget::resolve_clear_slow() const {
+  std::lock_guard lock(clear_mutex_);
+  if (!clear_pending_.load(std::memory_order_relaxed)) return;  // another thread resolved it meanwhile
+  const_cast<DepthTarget*>(this)->fill(clear_raw_, 0, 0, pitch_, padded_height_);
+  clear_pending_.store(false, std::memory_order_release);
+}
+
+void DepthTarget::fill(uint32_t raw, int x0, int y0, int w, int h) {
+  std::byte* base = storage_.data();
+  for (int y = y0; y < y0 + h; ++y) {
+    const size_t at = size_t(y) * size_t(pitch_) + size_t(x0);
+    if (format_ == DepthFormat::d16) std::fill_n(reinterpret_cast<uint16_t*>(base) + at, w, uint16_t(raw));
+    else std::fill_n(reinterpret_cast<uint32_t*>(base) + at, w, raw);
   }
 }
 

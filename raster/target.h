@@ -3,10 +3,13 @@
 // tile size so that tile execution can work on whole aligned 8-pixel rows.
 #pragma once
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -45,9 +48,19 @@ class AlignedBuffer {
 
 // A depth buffer in one of the formats of CONVENTIONS: d16 stores round(z·65535) as uint16, d24 stores
 // round(z·16777215) in the low 24 bits of a uint32, d32f stores the float z clamped to [0, 1].
+//
+// clear() does not touch memory: it records the value, and the clear happens on first use. A draw into the
+// target takes it over and clears each 64×64 tile on the worker that executes the tile, just before the tile's
+// commands (Renderer::draw), so no thread makes a serial pass over the whole target. Any other access through
+// the target (row(), raw(), value(), resolve_clear()) clears it whole first. A pointer taken earlier (a texture
+// view over the target) sees the cleared values once a draw or such an access has resolved the clear.
 class DepthTarget {
  public:
   DepthTarget(int width, int height, DepthFormat format);
+  DepthTarget(const DepthTarget& o);
+  DepthTarget(DepthTarget&& o) noexcept;
+  DepthTarget& operator=(const DepthTarget& o);
+  DepthTarget& operator=(DepthTarget&& o) noexcept;
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -57,8 +70,17 @@ class DepthTarget {
   int padded_height() const { return padded_height_; }
   size_t bytes_per_texel() const { return format_ == DepthFormat::d16 ? 2 : 4; }
 
-  // Clears every texel to the given depth (converted to the format; default 1.0 as in GL).
+  // Clears every texel to the given depth (converted to the format; default 1.0 as in GL), on first use.
   void clear(float depth = 1.0f);
+  // Carries out a pending clear now, on the calling thread.
+  void resolve_clear() const {
+    if (clear_pending_.load(std::memory_order_acquire)) resolve_clear_slow();
+  }
+  // For the renderer: takes over a pending clear (the stored value it clears to) so that the caller writes it
+  // into every texel of the padded target before anything reads it; nullopt when none is pending.
+  std::optional<uint32_t> take_pending_clear();
+  // Writes the stored value `raw` into the texels [x0, x0 + w) × [y0, y0 + h) (a tile of the padded target).
+  void fill(uint32_t raw, int x0, int y0, int w, int h);
 
   // The stored value at pixel (x, y) (y = 0 is the bottom row) as a float in [0, 1]: code / max code for the
   // unorm formats, the float itself for d32f.
@@ -68,17 +90,26 @@ class DepthTarget {
 
   template <class T>
   T* row(int y) {
+    resolve_clear();
     return reinterpret_cast<T*>(storage_.data()) + size_t(y) * size_t(pitch_);
   }
   template <class T>
   const T* row(int y) const {
+    resolve_clear();
     return reinterpret_cast<const T*>(storage_.data()) + size_t(y) * size_t(pitch_);
   }
 
  private:
+  void resolve_clear_slow() const;
+
   int width_, height_, pitch_, padded_height_;
   DepthFormat format_;
   AlignedBuffer storage_;
+  // The pending clear: its stored value, valid while clear_pending_ is set; the mutex orders concurrent
+  // first uses (readers of a const target may race to resolve it).
+  mutable std::atomic<bool> clear_pending_{false};
+  uint32_t clear_raw_ = 0;
+  mutable std::mutex clear_mutex_;
 };
 
 // A colour buffer: RGBA8 (unorm, optionally sRGB-encoded on write as GL_SRGB8_ALPHA8) or RGBA32F.

@@ -1,7 +1,7 @@
 // The wide fragment stage (fragment_pair, two quads in SIMD lanes) against the quad path: the same shader drawn
 // through both gives bit-identical colour and depth, over random perspective triangles with partial coverage
 // and clipping, with early depth testing, discard and depth writes, every depth format, the RGBA8 fast colour
-// write and the per-pixel fallbacks (sRGB, RGBA32F, multiply blend), at 0, 1, 2 and 7 threads. Also the pair
+// write and the per-pixel fallbacks (sRGB, RGBA32F, multiply blend), at 0, 1, 2, 7 and 16 threads. Also the pair
 // derivatives against the quad ones.
 #include <gtest/gtest.h>
 
@@ -133,7 +133,7 @@ void expect_paths_match(DepthFormat df, DepthFunc func, ColorFormat cf, bool srg
   state.blend = blend;
   const PairShader<Mode> pair{};
   const Output quad = render(0, QuadOnly<PairShader<Mode>>{pair}, scene, df, state, cf, srgb);
-  for (int threads : {0, 1, 2, 7}) {
+  for (int threads : {0, 1, 2, 7, 16}) {
     const Output wide = render(threads, pair, scene, df, state, cf, srgb);
     const std::string what = "mode " + std::to_string(Mode) + " " + std::string(to_string(df)) + " func " +
                              std::to_string(int(func)) + " threads " + std::to_string(threads);

@@ -1,6 +1,6 @@
 // Per-draw state: cull modes with both front faces, viewport sub-rectangles and scissor, perspective-correct
 // varyings, fragment depth writes and discard, multiply blending, draw validation, and bit-identical output
-// at 0, 1, 2 and 7 threads.
+// at 0, 1, 2, 7 and 16 threads.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -170,7 +170,7 @@ TEST(State, InvalidDrawsAreRefused) {
   EXPECT_THROW(DepthTarget(8, 16385, DepthFormat::d16), TargetSizeError);
 }
 
-// The same soup, drawn at 0, 1, 2 and 7 threads, gives bit-identical depth in every format.
+// The same soup, drawn at 0, 1, 2, 7 and 16 threads (so in 4 to 64 front-end chunks), gives bit-identical depth in every format.
 TEST(State, BitIdenticalAcrossThreadCounts) {
   auto soup = bench::make_soup(60000, 30.0, 512, 11);
   auto big = bench::make_soup(300, 5000.0, 512, 12);
@@ -178,7 +178,7 @@ TEST(State, BitIdenticalAcrossThreadCounts) {
   for (uint32_t i : big.indices) soup.indices.push_back(i + uint32_t(soup.positions.size() - big.positions.size()));
   for (DepthFormat fmt : {DepthFormat::d16, DepthFormat::d24, DepthFormat::d32f}) {
     uint64_t first = 0;
-    for (int threads : {0, 1, 2, 7}) {
+    for (int threads : {0, 1, 2, 7, 16}) {
       Renderer r(threads);
       DepthTarget d(512, 512, fmt);
       DrawState s;
