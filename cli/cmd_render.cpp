@@ -38,8 +38,7 @@ struct RenderArgs {
   std::string scene;  // the one scene of a job
   std::string technique, filter, bias, depth_format, size = "1280x720", maps, out = "frame.png", aliasing;
   std::string aov, aov_out;  // --aov position,normal,visibility,depth  --aov-out FILE.exr
-  long long shadow_size = 0;
-  CLI::Option* shadow_size_option = nullptr;  // given or not
+  std::optional<long long> shadow_size;  // given or not (a plain value: jobs outlive the parser that filled them)
   int threads = -1;
   int frames = 1;
   bool stats = false;
@@ -146,7 +145,7 @@ void check_job(const RenderArgs& a) {
     throw CliError("--technique", "technique " + a.technique + " is not built yet");
   if (a.poisson_taps != 0 && a.poisson_taps != 4 && a.poisson_taps != 16)
     throw CliError("--poisson-taps", std::to_string(a.poisson_taps) + " is not 4 or 16");
-  if (a.shadow_size_option && a.shadow_size_option->count()) check_side(a.shadow_size, "--shadow-size");
+  if (a.shadow_size) check_side(*a.shadow_size, "--shadow-size");
   check_threads(a.threads);
   if (a.frames < 1 || a.frames > 1000000) throw CliError("--frames", "expected 1 to 1000000 frames");
   for (const shading::tech::ParamSpec* p : all_params())
@@ -319,7 +318,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   if (!a.filter.empty()) config.filter = scenes::parse_filter(a.filter);
   if (!a.bias.empty()) config.bias = scenes::parse_bias_mode(a.bias);
   if (!a.depth_format.empty()) config.depth_format = scenes::parse_depth_format(a.depth_format);
-  if (a.shadow_size_option && a.shadow_size_option->count()) config.map_size = int(a.shadow_size);
+  if (a.shadow_size) config.map_size = int(*a.shadow_size);
   config.cull_front = a.cull_front;
   if (a.poisson_taps != 0) config.poisson_taps = a.poisson_taps;
   config.poisson_spread = a.poisson_spread;
@@ -480,7 +479,8 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
   app->add_option("--filter", args->filter, "Shadow filter for every light (see list)");
   app->add_option("--bias", args->bias, "Bias mode for every light (see list)");
   app->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (default 1280x720)");
-  args->shadow_size_option = app->add_option("--shadow-size", args->shadow_size, "Shadow map side in texels");
+  app->add_option_function<long long>(
+      "--shadow-size", [args](const long long& v) { args->shadow_size = v; }, "Shadow map side in texels");
   app->add_option("--threads", args->threads, "Worker threads (0: inline; default: all cores)");
   app->add_option("--frames", args->frames,
                   "Render N frames (timing, --animate); the last is written, or each with a frame field in --out");

@@ -210,8 +210,8 @@ TEST_F(CliScripting, GoldenWorkflowFailsOnOnePixelAndPassesAfterUpdate) {
 // unsharded run's document.
 TEST_F(CliScripting, BatchesAndShards) {
   const std::vector<std::string> lines = {
-      "tutorial --size 48x27 --out b_tutorial.png", "duel --size 48x27 --filter pcf --out b_duel.png",
-      "tutorial-spot --size 48x27 --out b_spot.png", "# a comment", "",
+      "tutorial --size 48x27 --out b_tutorial.png", "duel --size 48x27 --filter pcf --shadow-size 256 --out b_duel.png",
+      "tutorial-spot --size 48x27 --shadow-size 128 --out b_spot.png", "# a comment", "",
       "projective --size 48x27 --animate --frames 2 --out b_proj_%d.png"};
   {
     std::ofstream f(dir / "jobs.txt");
