@@ -7,11 +7,13 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <set>
 #include <system_error>
 
 #include "raster/limits.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/scene_build.h"
+#include "scenes/stage.h"
 
 namespace cli {
 namespace {
@@ -82,14 +84,43 @@ void check_output_dir(const std::string& file, const std::string& option) {
     throw CliError(option, "directory " + parent.string() + " does not exist");
 }
 
-scenes::Scene load_scene_or_builtin(const std::string& name) {
+namespace {
+
+bool is_model_file(const std::filesystem::path& p) {
+  const std::string e = lower_extension(p);
+  return e == ".gltf" || e == ".glb";
+}
+
+scenes::Scene load_any(const std::string& name, const scenes::StageOptions* stage, std::vector<std::string>* notes) {
   const std::filesystem::path path(name);
   std::error_code ec;
-  if (std::filesystem::is_regular_file(path, ec)) return scenes::load_scene(path);
+  if (std::filesystem::is_regular_file(path, ec)) {
+    if (stage && is_model_file(path)) {
+      scenes::StagedScene staged = scenes::load_model_staged(path, *stage);
+      if (notes) notes->insert(notes->end(), staged.notes.begin(), staged.notes.end());
+      return std::move(staged.scene);
+    }
+    return scenes::load_scene(path);
+  }
   if (std::filesystem::exists(path, ec)) throw CliError(name, "not a regular file");
   if (scenes::is_builtin_scene(name)) return scenes::builtin_scene(name);
   if (name.find('/') != std::string::npos || path.has_extension()) throw CliError(name, "no such file");
   return scenes::builtin_scene(name);  // throws `NAME: unknown built-in scene (known: ...)`
+}
+
+}  // namespace
+
+void print_notes(const std::vector<std::string>& notes) {
+  for (const std::string& n : notes) std::fprintf(stderr, "shadowlab: note: %s\n", n.c_str());
+}
+
+scenes::Scene load_scene_or_builtin(const std::string& name, const scenes::StageOptions* stage,
+                                    std::vector<std::string>* notes) {
+  scenes::Scene scene = load_any(name, stage, notes);
+  std::set<std::string> said;
+  for (const std::string& w : scene.warnings)
+    if (said.insert(w).second) std::fprintf(stderr, "shadowlab: warning: %s\n", w.c_str());
+  return scene;
 }
 
 Progress::Progress() : enabled_(isatty(STDERR_FILENO) == 1) {

@@ -11,10 +11,12 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "scenes/scene.h"
+#include "scenes/stage.h"
 
 namespace cli {
 
@@ -52,8 +54,14 @@ int check_side(long long value, const std::string& option);
 std::pair<float, float> parse_float_pair(const std::string& text, const std::string& option);
 
 // A scene file (JSON, .gltf, .glb) when `name` names an existing file, else a built-in scene. A name that looks
-// like a path (a '/' or an extension) but is no file is reported as a missing file.
-scenes::Scene load_scene_or_builtin(const std::string& name);
+// like a path (a '/' or an extension) but is no file is reported as a missing file. With `stage`, a .gltf/.glb
+// model is staged (scenes/stage.h: a sun, a ground and a camera where the file has none) and what was added is
+// appended to `notes` (print_notes() says them once the command's other checks have passed, so an error stays
+// the only line). The scene's import warnings are printed once each as `shadowlab: warning: ...`.
+scenes::Scene load_scene_or_builtin(const std::string& name, const scenes::StageOptions* stage = nullptr,
+                                    std::vector<std::string>* notes = nullptr);
+// Each note on stderr as `shadowlab: note: ...`.
+void print_notes(const std::vector<std::string>& notes);
 
 // A progress line on stderr for work that runs over a second, only when stderr is a terminal (silent in scripts
 // and CI): update() sets what the work is doing; a small thread redraws it with the elapsed time four times a

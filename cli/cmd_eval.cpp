@@ -174,7 +174,10 @@ int run_eval(const EvalArgs& a) {
         for (const auto& s : sizes) combos.push_back({t, f, b, s});
   const size_t sweep_size = combos.size();
 
-  const scenes::Scene scene = load_scene_or_builtin(a.scene);
+  const scenes::StageOptions stage;  // a bare glTF model gets its sun, ground and camera, as in render
+  std::vector<std::string> notes;
+  const scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
+  print_notes(notes);
   raster::Renderer renderer(a.threads);
   frame::FrameConfig base;
   base.width = size.width, base.height = size.height;

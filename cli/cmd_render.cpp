@@ -5,6 +5,8 @@
 // and a printf frame field (`frame_%04d.png`) for image sequences. This file only turns arguments into
 // frame::FrameConfig: the technique parameters' options come from the vocabulary's ParamSpec lists.
 #include <algorithm>
+#include <cctype>
+#include <variant>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -28,7 +30,10 @@
 #include "scenes/io/exr_image.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/png_frame.h"
+#include "scenes/camera_math.h"
+#include "scenes/scene_queries.h"
 #include "scenes/shadow_settings.h"
+#include "scenes/stage.h"
 
 namespace cli {
 namespace {
@@ -51,6 +56,9 @@ struct RenderArgs {
       normal_offset;
   // Technique parameters by key (vocabulary.h), set only when given.
   std::map<std::string, shading::tech::ParamValue> params;
+  bool ground = true;         // --ground / --no-ground: a plane under a bare glTF model (scenes/stage.h)
+  std::string sun, up = "y";  // --sun AZ,EL for a bare model; --up y|z: the model's up axis
+  std::string camera;         // --camera NAME|INDEX|orbit:AZ,EL[,DIST]
   bool json = false;          // --json: one document on stdout instead of text
   std::string batch, shard;   // --batch FILE, --shard I/N (top level only)
 };
@@ -132,6 +140,70 @@ std::vector<frame::AovChannel> parse_aov_list(const std::string& list, const std
 
 void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& args);
 
+// --camera orbit:AZ,EL[,DIST]: azimuth (from +Z towards +X) and elevation in degrees, distance in metres (0: framed).
+glm::vec3 parse_orbit(const std::string& spec) {
+  const std::string body = spec.substr(6);
+  std::vector<float> v;
+  size_t start = 0;
+  while (start <= body.size() && v.size() < 4) {
+    const size_t end = std::min(body.find(',', start), body.size());
+    const std::string part = body.substr(start, end - start);
+    size_t used = 0;
+    float x = 0;
+    try {
+      x = std::stof(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (part.empty() || used != part.size() || !std::isfinite(x))
+      throw CliError("--camera", "expected orbit:AZ,EL[,DIST] with numbers, got '" + spec + "'");
+    v.push_back(x);
+    start = end + 1;
+  }
+  if (v.size() < 2 || v.size() > 3) throw CliError("--camera", "expected orbit:AZ,EL[,DIST], got '" + spec + "'");
+  if (!(v[1] >= -89.0f && v[1] <= 89.0f)) throw CliError("--camera", "orbit elevation must be within -89..89 degrees");
+  if (v.size() == 3 && !(v[2] > 0.0f)) throw CliError("--camera", "orbit distance must be above 0");
+  return {v[0], v[1], v.size() == 3 ? v[2] : 0.0f};
+}
+
+// The camera --camera picks (adding an orbit camera to the scene), as an index into scene.cameras.
+size_t choose_camera(scenes::Scene& scene, const std::string& spec) {
+  if (spec.empty()) return 0;
+  if (spec.rfind("orbit:", 0) == 0) {
+    const glm::vec3 o = parse_orbit(spec);
+    // Around what casts shadows (a staged ground does not), framed like the default camera.
+    scenes::Aabb box = scenes::scene_bounds(scene, scenes::InstanceFilter::casters);
+    if (box.empty()) box = scenes::scene_bounds(scene);
+    scenes::Camera c = scenes::frame_camera(box, "orbit");
+    const float framed = glm::length(c.position - c.target);
+    const float distance = o.z > 0.0f ? o.z : framed;
+    const float az = glm::radians(o.x), el = glm::radians(o.y);
+    c.position = c.target + distance * glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+    if (auto* p = std::get_if<scenes::Perspective>(&c.projection)) {
+      const float radius = 0.5f * glm::length(scenes::scene_bounds(scene).size());
+      p->near = std::max(1e-3f * distance, distance - 1.5f * std::max(radius, 1e-3f));
+      p->far = distance + 1.5f * std::max(radius, 1e-3f);
+    }
+    scene.cameras.push_back(c);
+    return scene.cameras.size() - 1;
+  }
+  bool digits = !spec.empty() && spec.size() < 10;
+  for (char ch : spec) digits &= std::isdigit(static_cast<unsigned char>(ch)) != 0;
+  if (digits) {
+    const size_t i = std::stoul(spec);
+    if (i >= scene.cameras.size())
+      throw CliError("--camera", "camera " + spec + " does not exist (the scene has " +
+                                     std::to_string(scene.cameras.size()) + ")");
+    return i;
+  }
+  std::string names;
+  for (size_t i = 0; i < scene.cameras.size(); ++i) {
+    if (scene.cameras[i].name == spec) return i;
+    names += (names.empty() ? "" : ", ") + (scene.cameras[i].name.empty() ? std::to_string(i) : scene.cameras[i].name);
+  }
+  throw CliError("--camera", "no camera named '" + spec + "' (cameras: " + names + "; or an index, or orbit:AZ,EL)");
+}
+
 // Every check of a job's arguments that needs no rendering, so a bad job (or batch line) fails before any work.
 void check_job(const RenderArgs& a) {
   parse_size(a.size, "--size");
@@ -159,6 +231,13 @@ void check_job(const RenderArgs& a) {
       for (const scenes::BuiltinInfo& b : scenes::list_builtin_scenes()) animated |= b.name == a.scene && b.animated;
     if (!animated) throw CliError("--animate", "'" + a.scene + "' is not an animated built-in scene (animated: projective)");
   }
+  if (a.up != "y" && a.up != "z") throw CliError("--up", "expected y or z, got '" + a.up + "'");
+  if (!a.sun.empty()) {
+    const auto [az, el] = parse_float_pair(a.sun, "--sun");
+    if (!(el > 0.0f && el <= 90.0f)) throw CliError("--sun", "expected AZ,EL with an elevation above 0 and at most 90 degrees");
+    (void)az;
+  }
+  if (a.camera.rfind("orbit:", 0) == 0) parse_orbit(a.camera);
   // Each output: its kind, its folder, and its frame field (the folder of a pattern is checked as it would be
   // for frame 1).
   const std::string stem = scene_stem(a.scene);
@@ -310,8 +389,18 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   const bool sequence = has_frame_field(a.out, "--out");
   const std::vector<frame::AovChannel> aovs = parse_aov_list(a.aov, a.aov_out.empty() ? "" : expand_name(a.aov_out, stem, 1));
 
-  scenes::Scene scene = load_scene_or_builtin(a.scene);
+  scenes::StageOptions stage;
+  stage.ground = a.ground;
+  if (!a.sun.empty()) {
+    const auto [az, el] = parse_float_pair(a.sun, "--sun");
+    stage.sun = glm::vec2(az, el);
+  }
+  stage.z_up = a.up == "z";
+  std::vector<std::string> notes;
+  scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
   frame::FrameConfig config;
+  config.camera = choose_camera(scene, a.camera);
+  print_notes(notes);
   config.width = size.width;
   config.height = size.height;
   if (!a.technique.empty()) config.technique = scenes::parse_technique(a.technique);
@@ -527,6 +616,13 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
   }
   app->add_flag("--animate", args->animate, "Animated built-in scenes (projective): frame K at time K / fps");
   app->add_option("--fps", args->fps, "Frame rate of --animate (default 24)");
+  app->add_flag_callback("--ground", [args] { args->ground = true; },
+                         "A glTF model with no lights gets a ground plane and a sun (the default)");
+  app->add_flag_callback("--no-ground", [args] { args->ground = false; }, "No ground plane under a bare glTF model");
+  app->add_option("--sun", args->sun, "AZ,EL: the sun a glTF model with no lights gets (default: 105 degrees round from the camera, 50 up)");
+  app->add_option("--up", args->up, "y|z: a glTF model's up axis (z: rotated to +Y; default y)");
+  app->add_option("--camera", args->camera,
+                  "NAME, INDEX or orbit:AZ,EL[,DIST]: the camera (orbit: around the casters, framed when DIST is left out)");
   app->add_flag("--json", args->json, "Print JSON (docs/cli/render.schema.json) instead of text");
   app->add_option("--batch", args->batch,
                   "Run every line of FILE as a render command line (no scene arguments), in one process");

@@ -198,7 +198,7 @@ class Builder {
     for (size_t i = 0; i < desc_.cameras.size(); ++i)
       if (auto problem = camera_problem(cameras[i]))
         fail("cameras[" + std::to_string(i) + "]" + (problem->key.empty() ? "" : "." + problem->key), problem->message);
-    if (cameras.empty()) cameras.push_back(frame_camera(scene_bounds(out_)));
+    if (cameras.empty() && ctx_.default_camera) cameras.push_back(frame_camera(scene_bounds(out_)));
     out_.cameras = std::move(cameras);
   }
 
@@ -208,7 +208,7 @@ class Builder {
     for (size_t i = 0; i < desc_.lights.size(); ++i)
       if (auto problem = light_problem(lights[i]))
         fail("lights[" + std::to_string(i) + "]" + (problem->key.empty() ? "" : "." + problem->key), problem->message);
-    if (lights.empty()) {
+    if (lights.empty() && ctx_.default_light) {
       Light sun;
       sun.name = "default";
       sun.direction = -glm::vec3(0.5f, 2.0f, 2.0f);

@@ -15,6 +15,8 @@ namespace scenes {
 struct BuildContext {
   std::filesystem::path base_dir;
   std::string file;
+  bool default_camera = true;  // add frame_camera() when the scene has no camera (below)
+  bool default_light = true;   // add the default sun when the scene has no light (below)
 };
 
 // Builds a scene. Beyond what the document says:

@@ -21,6 +21,7 @@
 #include <valijson/validation_results.hpp>
 #include <valijson/validator.hpp>
 
+#include "scenes/io/exr_image.h"
 #include "tests/cli/cli_run.h"
 #include "tests/support.h"
 
@@ -268,6 +269,38 @@ TEST_F(CliScripting, SequencesVersionNamesAndThreads) {
   r = shadowlab(dir, "render tutorial --size 32x18 --threads 64 --out t.png");
   EXPECT_EQ(r.code, 0);
   EXPECT_EQ(r.err, "");
+}
+
+// From a glTF to a shadow in one line (issue 17): a model with no lights gets a sun, a ground and a camera, said
+// on stderr, and the frame shows the model's shadow on the ground (lit-facing pixels the technique shadows).
+TEST_F(CliScripting, BareGltfModelGetsASunAGroundAndAShadow) {
+  if (!testsupport::have_assets()) GTEST_SKIP() << "skipped: ../shared/assets not found";
+  auto shadowed = [&](const std::string& file, const std::string& extra) {
+    const Outcome r = shadowlab(dir, "render '" + (testsupport::assets_dir() / file).string() +
+                                         "' --size 160x90 --aov visibility --aov-out v.exr --out m.png " + extra);
+    EXPECT_EQ(r.code, 0) << file << "\n" << r.err;
+    const scenes::io::ExrImage v = scenes::io::read_exr_image(dir / "v.exr");
+    const scenes::io::ExrChannel* vis = v.find("light0.V");
+    const scenes::io::ExrChannel* facing = v.find("light0.facing");
+    size_t n = 0;
+    for (size_t i = 0; vis && facing && i < vis->values.size(); ++i) n += facing->values[i] > 0.5f && vis->values[i] < 0.5f;
+    return std::make_pair(n, r.err);
+  };
+  for (const char* file : {"fox/Fox.gltf", "damaged_helmet/DamagedHelmet.gltf", "duck/Duck.gltf"}) {
+    const auto [n, err] = shadowed(file, "");
+    EXPECT_GT(n, 150u) << file;  // a shadow a user sees at 160 x 90
+    EXPECT_THAT(err, ::testing::HasSubstr("shadowlab: note: "));
+    EXPECT_THAT(err, ::testing::HasSubstr("ground plane"));
+  }
+  // Without the ground the shadow has nothing to fall on.
+  EXPECT_LT(shadowed("fox/Fox.gltf", "--no-ground").first, 150u);
+  // Other cameras: orbit, by index; bad ones are refused on the option.
+  EXPECT_GT(shadowed("fox/Fox.gltf", "--camera orbit:200,30 --sun 90,40").first, 150u);
+  testsupport::expect_bad_run(dir, "render " + (testsupport::assets_dir() / "fox/Fox.gltf").string() +
+                                       " --camera nowhere --out x.png", "--camera", "x.png");
+  testsupport::expect_bad_run(dir, "render tutorial --camera orbit:10 --out x.png", "--camera", "x.png");
+  testsupport::expect_bad_run(dir, "render tutorial --sun 10,-5 --out x.png", "--sun", "x.png");
+  testsupport::expect_bad_run(dir, "render tutorial --up x --out x.png", "--up", "x.png");
 }
 
 // The README's quick start, run as written (the binary path mapped to this build's).

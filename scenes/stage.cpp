@@ -1,0 +1,95 @@
+// A bare model made ready to look at (see stage.h).
+#include "scenes/stage.h"
+
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+#include <variant>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "scenes/camera_math.h"
+#include "scenes/scene_build.h"
+#include "scenes/scene_desc.h"
+#include "scenes/scene_error.h"
+#include "scenes/scene_queries.h"
+#include "scenes/shadow_settings.h"
+
+namespace scenes {
+
+glm::vec3 sun_direction(float az_deg, float el_deg) {
+  const float az = glm::radians(az_deg), el = glm::radians(el_deg);
+  return -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+}
+
+StagedScene load_model_staged(const std::filesystem::path& path, const StageOptions& options) {
+  SceneDesc desc;
+  desc.name = path.stem().string();
+  ObjectDesc model;
+  model.name = desc.name;
+  model.source = GltfRef{path.filename().string()};
+  if (options.z_up) model.transform.rotate_deg = glm::vec3(-90.0f, 0.0f, 0.0f);
+  desc.objects.push_back(model);
+  BuildContext context{path.parent_path(), path.string()};
+  if (options.sun) {
+    const glm::vec2 s = *options.sun;
+    if (!std::isfinite(s.x) || !std::isfinite(s.y) || s.y <= 0.0f || s.y > 90.0f)
+      throw SceneError("sun", "", "expected AZ,EL with an elevation above 0 and at most 90 degrees");
+  }
+
+  // The model alone first: its own lights and cameras, and its bounds.
+  BuildContext probe_context = context;
+  probe_context.default_camera = probe_context.default_light = false;
+  const Scene probe = build_scene(desc, probe_context);
+  const Aabb bounds = scene_bounds(probe);
+  StagedScene out;
+  const std::string file = path.filename().string();
+  // The camera the frame will use first: the file's, or one framing the model.
+  glm::vec3 eye = bounds.empty() ? glm::vec3(0.0f, 0.0f, 1.0f) : frame_camera(bounds).position;
+  if (!probe.cameras.empty()) eye = probe.cameras[0].position;
+  if (probe.lights.empty()) {
+    // By default the sun stands kStageSunAzimuth to the side of the camera's azimuth (seen from the model), so
+    // the shadow falls sideways across the ground the camera sees instead of hiding behind the model.
+    const glm::vec3 view = eye - (bounds.empty() ? glm::vec3(0.0f) : bounds.center());
+    const float camera_az = glm::degrees(std::atan2(view.x, view.z));
+    const float az = options.sun ? options.sun->x : std::remainder(camera_az + kStageSunAzimuth, 360.0f);
+    const float el = options.sun ? options.sun->y : kStageSunElevation;
+    Light sun;
+    sun.name = "sun";
+    sun.direction = sun_direction(az, el);
+    sun.shadow = default_shadow_settings(LightType::directional);
+    desc.lights.push_back(sun);
+    char line[256];
+    std::snprintf(line, sizeof line, "%s has no lights: added a sun at azimuth %.0f, elevation %.0f degrees (--sun AZ,EL)",
+                  file.c_str(), double(az), double(el));
+    out.notes.push_back(line);
+    if (options.ground && !bounds.empty()) {
+      const glm::vec3 size = bounds.size(), centre = bounds.center();
+      const float side = std::max(3.0f * std::max(size.x, size.z), 1e-3f);
+      ObjectDesc ground;
+      ground.name = "ground";
+      ground.source = Shape{PlaneShape{glm::vec2(side), 1}};
+      ground.transform.translate = glm::vec3(centre.x, bounds.min.y, centre.z);  // the model stands on it
+      ground.casts_shadows = false;
+      desc.objects.push_back(ground);
+      std::snprintf(line, sizeof line, "added a %.3g m ground plane at y = %.3g under it (--no-ground)", double(side),
+                    double(bounds.min.y));
+      out.notes.push_back(line);
+    }
+  }
+  if (probe.cameras.empty() && !bounds.empty()) {
+    Camera c = frame_camera(bounds, "framed");
+    // Far enough for the ground around the model (up to about 2.2 model sizes from its centre).
+    if (auto* p = std::get_if<Perspective>(&c.projection)) {
+      const float radius = 0.5f * glm::length(bounds.size());
+      p->far = glm::length(c.position - c.target) + 5.0f * std::max(radius, 1e-3f);
+    }
+    desc.cameras.push_back(c);
+    out.notes.push_back(file + " has no camera: added one framing the model (--camera orbit:AZ,EL)");
+  }
+  out.scene = build_scene(desc, context);
+  return out;
+}
+
+}  // namespace scenes

@@ -1,0 +1,40 @@
+// Staging a bare glTF model so that its first render shows what shadowlab is for: a model file with no lights
+// gets a sun and, under its bounds, a ground plane to catch the shadow; a model with no camera gets one that
+// frames the model (not the ground). What was added is returned as notes for the user. A file's own lights and
+// cameras are kept untouched.
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "scenes/scene.h"
+
+namespace scenes {
+
+struct StageOptions {
+  bool ground = true;                // a ground plane under a model that has no lights
+  // Azimuth (from +Z towards +X) and elevation, degrees; default: kStageSunAzimuth degrees round from the
+  // camera's azimuth, kStageSunElevation up.
+  std::optional<glm::vec2> sun;
+  bool z_up = false;                 // the model's up axis is +Z: rotated so that it is +Y
+};
+
+struct StagedScene {
+  Scene scene;
+  std::vector<std::string> notes;    // one sentence each: what was added and how to change it
+};
+
+// The default sun: its azimuth relative to the camera's, and its elevation, degrees.
+inline constexpr float kStageSunAzimuth = 105.0f, kStageSunElevation = 50.0f;
+
+// Loads `path` (.gltf or .glb) as load_scene() does, then stages it as described above. Throws SceneError
+// (and for a sun below the horizon or at the zenith's exact opposite, SceneError on "sun").
+StagedScene load_model_staged(const std::filesystem::path& path, const StageOptions& options);
+
+// The direction a sun at azimuth `az` and elevation `el` (degrees) shines along (unit, pointing down for el > 0).
+glm::vec3 sun_direction(float az_deg, float el_deg);
+
+}  // namespace scenes
