@@ -301,7 +301,8 @@ nlohmann::json write_outputs(const RenderArgs& a, const frame::Frame& result,
       for (const frame::AliasingImage& img : result.aliasing) measured += img.measured > 0;
       if (measured == 0)
         throw CliError("--aliasing", "no light of this frame has a measured pixel (measured: shadowmap, cascades, "
-                                     "lispsm, frustum-faces, on pixels facing the light)");
+                                     "lispsm, frustum-faces, esm, vsm, evsm2, evsm4, pcss, on pixels facing the "
+                                     "light)");
       const std::filesystem::path base(expand_name(a.aliasing, stem, number));
       for (size_t i = 0; i < result.aliasing.size(); ++i) {
         const frame::AliasingImage& img = result.aliasing[i];

@@ -10,13 +10,25 @@
 
 #include "raster/limits.h"
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace raster {
 
 AlignedBuffer::AlignedBuffer(size_t bytes) : size_(bytes) {
-  const size_t rounded = (bytes + 63) / 64 * 64;
-  void* p = std::aligned_alloc(64, rounded == 0 ? 64 : rounded);
+  // Buffers of 2 MiB and more are aligned to 2 MiB and offered to the kernel as transparent huge pages: zeroing
+  // a 2048² RGBA32F target (64 MiB) took 16,384 page faults, measured at about 0.7 s in a virtual machine, and
+  // takes 32 with huge pages. The contents and the alignment the code relies on (64 bytes) are unchanged.
+  constexpr size_t kHuge = size_t(2) << 20;
+  const size_t align = bytes >= kHuge ? kHuge : 64;
+  const size_t rounded = bytes == 0 ? 64 : (bytes + align - 1) / align * align;
+  void* p = std::aligned_alloc(align, rounded);
   if (!p) throw std::bad_alloc();
-  std::memset(p, 0, rounded == 0 ? 64 : rounded);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  if (align == kHuge) madvise(p, rounded, MADV_HUGEPAGE);  // advice only: its failure changes nothing
+#endif
+  std::memset(p, 0, rounded);
   data_.reset(static_cast<std::byte*>(p));
 }
 

@@ -20,3 +20,8 @@ omni=(--filters hard,pcf --biases slope,normal --sizes 512,1024)
 "$bin" eval paraboloid --techniques cube,paraboloid "${omni[@]}" "${common[@]}" --out "$out/paraboloid"
 "$bin" eval projective --techniques projective,shadowmap --filters pcf --biases slope --sizes 256,1024,2048 \
     "${common[@]}" --out "$out/projective"
+# Issue 19: the filterable maps and PCSS beside the classic map with PCF and Poisson (each light's own size).
+for scene in tutorial duel; do
+  "$bin" eval "$scene" --techniques shadowmap --filters pcf,poisson --out "$out/$scene-classic"
+  "$bin" eval "$scene" --techniques esm,vsm,evsm2,evsm4,pcss --out "$out/$scene-filtered"
+done

@@ -5,8 +5,10 @@
 
 #include "shading/techniques/cascades.h"
 #include "shading/techniques/classic.h"
+#include "shading/techniques/filtered.h"
 #include "shading/techniques/frustum_faces.h"
 #include "shading/techniques/omni_read.h"
+#include "shading/techniques/pcss.h"
 #include "shading/techniques/technique.h"
 
 namespace shading::tech {
@@ -23,6 +25,11 @@ constexpr TechniqueImpl kRegistry[] = {
     {Technique::cascades, Application::light_visibility, &plan_cascades},
     {Technique::lispsm, Application::light_visibility, &plan_lispsm},
     {Technique::frustum_faces, Application::light_visibility, &plan_frustum_faces},
+    {Technique::esm, Application::light_visibility, &plan_esm},
+    {Technique::vsm, Application::light_visibility, &plan_vsm},
+    {Technique::evsm2, Application::light_visibility, &plan_evsm2},
+    {Technique::evsm4, Application::light_visibility, &plan_evsm4},
+    {Technique::pcss, Application::light_visibility, &plan_pcss},
 };
 
 }  // namespace

@@ -34,6 +34,11 @@ enum class Technique : uint8_t {
   cascades,       // cascaded maps over slices of the view frustum (directional)
   lispsm,         // light-space perspective shadow map (directional)
   frustum_faces,  // perspective maps cut from the light-facing faces of the view frustum (directional, 2003)
+  esm,            // exponential shadow map: exp(c z), blurred (filtered.h)
+  vsm,            // variance shadow map: (z, z^2), blurred, Chebyshev bound
+  evsm2,          // exponential variance shadow map, positive warp only
+  evsm4,          // exponential variance shadow map, positive and negative warps
+  pcss,           // percentage-closer soft shadows: blocker search, penumbra from the light's size (pcss.h)
 };
 
 // How a map is read. Each is a compile-time filter type (shadow_filters.h); the choice is made once per batch.
@@ -85,6 +90,7 @@ struct ParamSpec {
   std::string_view help;
   double lo = 0.0, hi = 0.0;  // number, integer: the accepted range
   std::array<std::string_view, 3> choices{};  // choice: the accepted values
+  std::string_view range_note{};  // number: why the range ends where it does, added to a range refusal
 };
 
 inline constexpr ParamSpec kFilterParams[] = {
@@ -153,6 +159,41 @@ inline constexpr ParamSpec kFaceParams[] = {
     kViewRangeParam,
 };
 
+// The filterable maps (esm, vsm, evsm2, evsm4) and PCSS (docs/filtered-shadows.md). The exponent limits are
+// where 32-bit float storage overflows: ESM stores exp(c·z) with z in [0, 1], so c <= ln(FLT_MAX) = 88.72;
+// EVSM stores exp(c·x) and its square with x in [-1, 1], so c <= ln(FLT_MAX) / 2 = 44.36.
+inline constexpr ParamSpec kBlurParam = {
+    "blur_radius", "--blur-radius", ParamKind::integer, "2",
+    "esm, vsm, evsm2, evsm4: box blur radius in texels of the separable blur passes (0: no blur)", 0, 16};
+inline constexpr ParamSpec kLightBleedParam = {
+    "light_bleed", "--light-bleed", ParamKind::number, "0.2",
+    "vsm, evsm2, evsm4: light-bleeding reduction, the Chebyshev bound p remapped by linstep(amount, 1, p)", 0,
+    0.99};
+inline constexpr ParamSpec kMinVarianceParam = {
+    "min_variance", "--min-variance", ParamKind::number, "0.00002",
+    "vsm: smallest variance in the Chebyshev bound (in depth units squared)", 0, 0.01};
+inline constexpr ParamSpec kEsmParams[] = {
+    {"esm_c", "--esm-c", ParamKind::number, "80", "esm: the exponent c of exp(c z); larger is sharper, less leaking",
+     1, 88.72, {}, "exp(c z) overflows 32-bit float storage for c above ln(FLT_MAX) = 88.72"},
+    kBlurParam,
+};
+inline constexpr ParamSpec kVsmParams[] = {kBlurParam, kLightBleedParam, kMinVarianceParam};
+inline constexpr ParamSpec kEvsmParams[] = {
+    {"evsm_positive", "--evsm-positive", ParamKind::number, "40", "evsm2, evsm4: exponent of the positive warp",
+     0.1, 44.36, {}, "the second moment exp(2 c) overflows 32-bit float storage for c above 44.36"},
+    {"evsm_negative", "--evsm-negative", ParamKind::number, "5", "evsm4: exponent of the negative warp", 0.1, 44.36,
+     {}, "the second moment exp(2 c) overflows 32-bit float storage for c above 44.36"},
+    {"evsm_min_variance", "--evsm-min-variance", ParamKind::number, "0.0000001",
+     "evsm2, evsm4: smallest variance in depth units squared, scaled by each warp's slope squared", 0, 0.01},
+    kBlurParam,
+    kLightBleedParam,
+};
+inline constexpr ParamSpec kPcssParams[] = {
+    {"light_angle", "--light-angle", ParamKind::number, "1",
+     "pcss, directional light: its angular diameter in degrees (the sun: 0.53)", 0, 30},
+    {"light_radius", "--light-radius", ParamKind::number, "0.1", "pcss, spot light: its radius in metres", 0, 100},
+};
+
 // ---- The defaults table: one row per technique, indexed by Technique.
 inline constexpr uint8_t light_bit(LightType t) { return uint8_t(1u << unsigned(t)); }
 inline constexpr uint8_t kAllLights = 0xF;
@@ -195,6 +236,21 @@ inline constexpr TechniqueInfo kTechniques[] = {
     {Technique::frustum_faces, "frustum-faces",
      "perspective maps cut from the light-facing faces of the view frustum (2003)",
      light_bit(LightType::directional), true, 1024, DepthFormat::d24, "window-depth", kFaceParams, true},
+    {Technique::esm, "esm", "exponential shadow map: exp(c z) blurred, visibility clamp(exp(c (z_occ - z)))",
+     light_bit(LightType::directional) | light_bit(LightType::spot), true, 1024, DepthFormat::d32f, "window-depth",
+     kEsmParams, false},
+    {Technique::vsm, "vsm", "variance shadow map: (z, z^2) blurred, Chebyshev upper bound",
+     light_bit(LightType::directional) | light_bit(LightType::spot), true, 1024, DepthFormat::d32f, "window-depth",
+     kVsmParams, false},
+    {Technique::evsm2, "evsm2", "exponential variance shadow map: positive warp exp(c z), two moments",
+     light_bit(LightType::directional) | light_bit(LightType::spot), true, 1024, DepthFormat::d32f, "window-depth",
+     kEvsmParams, false},
+    {Technique::evsm4, "evsm4", "exponential variance shadow map: positive and negative warps, four moments",
+     light_bit(LightType::directional) | light_bit(LightType::spot), true, 1024, DepthFormat::d32f, "window-depth",
+     kEvsmParams, false},
+    {Technique::pcss, "pcss", "percentage-closer soft shadows: blocker search, penumbra from the light's size",
+     light_bit(LightType::directional) | light_bit(LightType::spot), true, 1024, DepthFormat::d24, "window-depth",
+     kPcssParams, false},
 };
 
 inline constexpr NamedEntry kLightTypeNames[] = {
@@ -224,7 +280,7 @@ inline constexpr NamedEntry kDepthFormatNames[] = {
     {"d32f", "32-bit float depth"},
 };
 
-static_assert(std::size(kTechniques) == size_t(Technique::frustum_faces) + 1);
+static_assert(std::size(kTechniques) == size_t(Technique::pcss) + 1);
 static_assert(std::size(kFilterNames) == size_t(FilterKind::early_bail) + 1);
 static_assert(std::size(kBiasNames) == size_t(BiasMode::normal) + 1);
 static_assert(std::size(kLightTypeNames) == size_t(LightType::hemispherical) + 1);
@@ -287,7 +343,7 @@ constexpr int max_map_size(Technique t) {
 
 // What is wrong with map side `size` for technique t; none when it is fine.
 inline std::optional<std::string> map_size_problem(Technique t, int size) {
-  const int lo = info(t).reads_filter ? 16 : 1, hi = max_map_size(t);
+  const int lo = t == Technique::projective || t == Technique::none ? 1 : 16, hi = max_map_size(t);
   if (size < lo || size > hi)
     return std::to_string(size) + " is outside " + std::to_string(lo) + ".." + std::to_string(hi) +
            (hi < 16384 ? " for technique " + std::string(info(t).name) + " (its maps share one target of at most 16384 "
@@ -340,7 +396,8 @@ inline std::optional<std::string> value_problem(const ParamSpec& spec, const Par
       std::snprintf(range, sizeof range, "[%g, %g]", spec.lo, spec.hi);
       const bool whole = spec.kind == ParamKind::integer;
       if (!v || !std::isfinite(*v) || *v < spec.lo || *v > spec.hi || (whole && *v != std::floor(*v)))
-        return std::string(whole ? "expected a whole number in " : "expected a number in ") + range;
+        return std::string(whole ? "expected a whole number in " : "expected a number in ") + range +
+               (spec.range_note.empty() ? std::string() : " (" + std::string(spec.range_note) + ")");
       return std::nullopt;
     }
     case ParamKind::choice: {

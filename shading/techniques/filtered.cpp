@@ -1,0 +1,165 @@
+// The filterable maps' planning, passes and reading (see filtered.h).
+#include "shading/techniques/filtered.h"
+
+#include <algorithm>
+
+#include "shading/lookup.h"
+#include "shading/techniques/blur_pass.h"
+#include "shading/techniques/depth_pass.h"
+
+namespace shading::tech {
+
+bool filtered_context(const FilteredReader& r, glm::vec3 p, glm::vec3 n, glm::vec2& st, float& depth, bool& lit) {
+  lit = false;
+  const glm::vec3 to_light = r.kind == LightKind::spot ? glm::normalize(r.position - p) : -r.direction;
+  const glm::vec3 q = r.bias.mode == BiasMode::normal ? p + n * r.bias.normal_offset : p;
+  const float b = depth_bias(r.bias, glm::dot(n, to_light));
+  const glm::vec4 c = r.shadow * glm::vec4(q, 1.0f);
+  if (r.depth.perspective) {
+    if (!(c.w > 0.0f)) return false;
+    const float w = 1.0f / c.w;
+    st = glm::vec2(c.x * w, c.y * w);
+    if (!(st.x >= 0.0f && st.x <= 1.0f && st.y >= 0.0f && st.y <= 1.0f)) return false;
+    depth = r.depth.of_view(r.view * glm::vec4(q, 1.0f)) - b;
+  } else {
+    st = glm::vec2(c.x, c.y);
+    depth = c.z - b;
+    if (!(st.x >= 0.0f && st.x <= 1.0f && st.y >= 0.0f && st.y <= 1.0f)) return lit = true, false;
+  }
+  // Beyond the far plane the map holds 1 (cleared): compare there, as a receiver on the far plane would.
+  depth = std::min(depth, 1.0f);
+  return true;
+}
+
+float filtered_visibility(const FilteredReader& r, glm::vec3 p, glm::vec3 n) {
+  glm::vec2 st;
+  float d;
+  bool lit;
+  if (!filtered_context(r, p, n, st, d, lit)) return lit ? 1.0f : 0.0f;
+  return moment_visibility(r.params, texture(r.moments, r.sampler, st), d);
+}
+
+raster::DrawStats filter_classic_map(raster::Renderer& renderer, const ShadowMapSet& set, const ClassicLight& light,
+                                     const BiasParams& bias, const MomentParams& params, int blur_radius,
+                                     FilteredMap& out) {
+  const ShadowPass& p = set.passes.at(0);
+  const raster::DepthTarget& depth = *set.targets.at(p.target);
+  if (!out.map || out.map->width() != depth.width() || out.map->height() != depth.height()) {
+    out.map = std::make_unique<raster::ColorTarget>(depth.width(), depth.height(), raster::ColorFormat::rgba32f);
+    out.scratch = std::make_unique<raster::ColorTarget>(depth.width(), depth.height(), raster::ColorFormat::rgba32f);
+  }
+  FilteredReader& r = out.reader;
+  r.shadow = shadow_matrix(p);
+  r.view = p.view;
+  r.depth = LightDepth::of(p.proj, p.perspective);
+  r.kind = light.kind;
+  r.position = light.position;
+  r.direction = light.direction;
+  r.bias = bias;
+  r.params = params;
+  raster::DrawStats stats = encode_moments(renderer, depth, r.depth, params, *out.map);
+  stats += blur_map(renderer, *out.map, *out.scratch, blur_radius, moment_channels(params.kind));
+  r.moments = Texture2D::view(*out.map);
+  return stats;
+}
+
+MomentParams moment_params(const ShadowConfig& c) {
+  const Params p(c);
+  MomentParams m;
+  switch (c.technique) {
+    case Technique::esm: m.kind = MomentKind::esm; break;
+    case Technique::evsm2: m.kind = MomentKind::evsm2; break;
+    case Technique::evsm4: m.kind = MomentKind::evsm4; break;
+    default: m.kind = MomentKind::vsm; break;
+  }
+  if (m.kind == MomentKind::esm) {
+    m.esm_c = float(p.number("esm_c"));
+  } else if (m.kind == MomentKind::vsm) {
+    m.light_bleed = float(p.number("light_bleed"));
+    m.min_variance = float(p.number("min_variance"));
+  } else {
+    m.light_bleed = float(p.number("light_bleed"));
+    m.min_variance = float(p.number("evsm_min_variance"));
+    m.positive = float(p.number("evsm_positive"));
+    m.negative = float(p.number("evsm_negative"));
+  }
+  return m;
+}
+
+namespace {
+
+class FilteredShadow final : public LightShadow {
+ public:
+  FilteredShadow(Technique id, const ClassicLight& light, const ClassicSettings& settings, const ClassicFit& fit,
+                 const MomentParams& params, int radius)
+      : id_(id), light_(light), settings_(settings), set_(plan_classic_map(light, settings, fit)), params_(params),
+        radius_(radius) {}
+
+  raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& c) override {
+    raster::DrawStats stats = build_maps(renderer, set_, c.positions, c.indices, classic_depth_options(settings_));
+    stats += filter_classic_map(renderer, set_, light_, settings_.bias, params_, radius_, filtered_);
+    return stats;
+  }
+  void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const override {
+    for (size_t i = 0; i < q.size(); ++i) vis[i] = filtered_visibility(filtered_.reader, q[i].p, q[i].n);
+  }
+  bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const override {
+    const ShadowPass& pass = set_.passes.at(0);
+    const glm::vec2 size(float(pass.viewport.width), float(pass.viewport.height));
+    auto texel = [&](glm::vec3 q, glm::vec2& t) { return map_texel(filtered_.reader.shadow, pass.perspective, size, q, t); };
+    if (!texel(p, out[0])) return false;
+    for (size_t i = 0; i < others.size(); ++i)
+      if (!texel(others[i], out[i + 1])) return false;
+    return true;
+  }
+  std::vector<MapRecord> maps() const override {
+    const ShadowPass& p = set_.passes.at(0);
+    MapRecord m;
+    m.target = set_.targets.at(p.target).get();
+    m.technique = to_string(id_);
+    m.encoding = info(id_).encoding;
+    m.world_to_camera = p.view;
+    m.world_to_ndc = p.proj * p.view;
+    return {m};
+  }
+
+ private:
+  Technique id_;
+  ClassicLight light_;
+  ClassicSettings settings_;
+  ShadowMapSet set_;
+  MomentParams params_;
+  int radius_;
+  FilteredMap filtered_;
+};
+
+std::unique_ptr<LightShadow> plan_filtered(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {
+  ClassicLight l;
+  l.kind = light.type == LightType::spot ? LightKind::spot : LightKind::directional;
+  l.position = light.position;
+  l.direction = light.direction;
+  l.outer_angle = light.outer_angle;
+  l.range = light.range;
+  const ClassicSettings s{c.filter, c.filter_params, c.bias, c.cull_front, c.map_size, c.depth_format};
+  const ClassicFit fit{in.receivers, in.casters, std::nullopt};
+  const MomentParams m = moment_params(c);
+  const int radius = int(Params(c).number("blur_radius"));
+  return std::make_unique<FilteredShadow>(c.technique, l, s, fit, m, radius);
+}
+
+}  // namespace
+
+std::unique_ptr<LightShadow> plan_esm(const LightDesc& l, const ShadowConfig& c, const PlanInputs& in) {
+  return plan_filtered(l, c, in);
+}
+std::unique_ptr<LightShadow> plan_vsm(const LightDesc& l, const ShadowConfig& c, const PlanInputs& in) {
+  return plan_filtered(l, c, in);
+}
+std::unique_ptr<LightShadow> plan_evsm2(const LightDesc& l, const ShadowConfig& c, const PlanInputs& in) {
+  return plan_filtered(l, c, in);
+}
+std::unique_ptr<LightShadow> plan_evsm4(const LightDesc& l, const ShadowConfig& c, const PlanInputs& in) {
+  return plan_filtered(l, c, in);
+}
+
+}  // namespace shading::tech

@@ -1,0 +1,62 @@
+// The filterable shadow maps: exponential (ESM), variance (VSM) and exponential variance (EVSM, two or four
+// moments) for directional and spot lights, on the classic technique's single map. Building is four passes on
+// the pipeline: the depth pass (depth_pass.h, the classic state), the encode pass (depth → moments, RGBA32F)
+// and the two blur passes (blur_pass.h). Reading is one bilinear lookup of the blurred moments per point and
+// the kind's visibility formula (moments.h). Formulas, parameters and limits: docs/filtered-shadows.md.
+#pragma once
+#include <memory>
+#include <span>
+
+#include <glm/mat4x4.hpp>
+
+#include "shading/sampler.h"
+#include "shading/techniques/classic.h"
+#include "shading/techniques/light_depth.h"
+#include "shading/techniques/moments.h"
+#include "shading/techniques/technique.h"
+#include "shading/texture.h"
+
+namespace shading::tech {
+
+// Everything a fragment needs to read a light's filtered map, copied once per draw.
+struct FilteredReader {
+  glm::mat4 shadow{1.0f};  // bias × proj × view
+  glm::mat4 view{1.0f};    // the light's view (linear depth of perspective maps)
+  LightDepth depth;
+  LightKind kind = LightKind::directional;
+  glm::vec3 position{0.0f}, direction{0.0f, -1.0f, 0.0f};
+  BiasParams bias;  // constant, slope (in linear depth units) and normal offset; offset acts in the depth pass
+  MomentParams params;
+  Texture2D moments;  // view of the blurred RGBA32F target
+  Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
+};
+
+// Where world point p with unit normal n reads the map and its linear depth there (bias applied); false where
+// a spot light leaves it unlit (behind the light or outside its map), and for a directional map's outside,
+// where `lit` is set instead.
+bool filtered_context(const FilteredReader& r, glm::vec3 p, glm::vec3 n, glm::vec2& st, float& depth, bool& lit);
+
+// Visibility in [0, 1] of world point p with unit normal n.
+float filtered_visibility(const FilteredReader& r, glm::vec3 p, glm::vec3 n);
+
+// A built classic map set (one pass) turned filterable: the moment target, its blur scratch and the reader.
+struct FilteredMap {
+  std::unique_ptr<raster::ColorTarget> map, scratch;
+  FilteredReader reader;
+};
+
+// Runs the encode and blur passes over `set`'s (already built) depth map and sets up the reader.
+raster::DrawStats filter_classic_map(raster::Renderer& renderer, const ShadowMapSet& set, const ClassicLight& light,
+                                     const BiasParams& bias, const MomentParams& params, int blur_radius,
+                                     FilteredMap& out);
+
+// The moment kind and its parameters from a ShadowConfig (esm, vsm, evsm2 or evsm4).
+MomentParams moment_params(const ShadowConfig& config);
+
+// The registry's factories (technique.h), one per kind; the map is planned as the classic one.
+std::unique_ptr<LightShadow> plan_esm(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
+std::unique_ptr<LightShadow> plan_vsm(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
+std::unique_ptr<LightShadow> plan_evsm2(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
+std::unique_ptr<LightShadow> plan_evsm4(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
+
+}  // namespace shading::tech

@@ -1,0 +1,55 @@
+// The filterable maps and PCSS from the command line: each renders, and a bad setting — an exponent that
+// overflows 32-bit float storage, a negative light size, a blur radius out of range, a parameter in a scene file
+// out of range — is refused with one line naming the option or field, exit 2 and no output file.
+#include <gtest/gtest.h>
+#include <gmock/gmock.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/cli/cli_run.h"
+#include "tests/support.h"
+
+namespace {
+
+TEST(CliFiltered, EachTechniqueRendersTheTutorial) {
+  const auto dir = testsupport::temp_dir("cli_filtered_render");
+  for (const char* t : {"esm", "vsm", "evsm2", "evsm4", "pcss"}) {
+    const testsupport::Outcome r = testsupport::shadowlab(
+        dir, std::string("render tutorial --size 64x36 --shadow-size 128 --threads 2 --out f.png --technique ") + t);
+    EXPECT_EQ(r.code, 0) << t << ": " << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "f.png")) << t;
+    std::filesystem::remove(dir / "f.png");
+  }
+}
+
+TEST(CliFiltered, BadSettingsNameTheirOption) {
+  const auto dir = testsupport::temp_dir("cli_filtered_bad");
+  const std::string render = "render tutorial --size 32x18 --out o.png ";
+  testsupport::expect_bad_run(dir, render + "--technique esm --esm-c 100", "--esm-c", "o.png");
+  const testsupport::Outcome r = testsupport::shadowlab(dir, render + "--technique esm --esm-c 100");
+  EXPECT_THAT(r.err, ::testing::HasSubstr("overflows 32-bit float storage")) << r.err;
+  testsupport::expect_bad_run(dir, render + "--technique evsm4 --evsm-positive 50", "--evsm-positive", "o.png");
+  testsupport::expect_bad_run(dir, render + "--technique pcss --light-angle -1", "--light-angle", "o.png");
+  testsupport::expect_bad_run(dir, "render tutorial-spot --size 32x18 --out o.png --technique pcss --light-radius -0.5",
+                              "--light-radius", "o.png");
+  testsupport::expect_bad_run(dir, render + "--technique vsm --blur-radius 17", "--blur-radius", "o.png");
+  testsupport::expect_bad_run(dir, render + "--technique vsm --light-bleed 1", "--light-bleed", "o.png");
+  // A parameter no light's technique takes.
+  testsupport::expect_bad_run(dir, render + "--technique shadowmap --esm-c 40", "--esm-c", "o.png");
+}
+
+TEST(CliFiltered, SceneFileExponentOutOfRangeNamesTheField) {
+  const auto dir = testsupport::temp_dir("cli_filtered_scene");
+  std::ofstream(dir / "s.json") << R"({"version": 1, "name": "s", "objects": [
+    {"name": "floor", "primitive": {"type": "box", "size": [4, 0.5, 4]}}],
+  "cameras": [{"position": [3, 4, 5], "target": [0, 0, 0], "perspective": {"fovy": 50, "near": 0.5, "far": 60}}],
+  "lights": [{"name": "sun", "type": "directional", "to_light": [0.5, 2, 1],
+              "shadow": {"technique": "esm", "params": {"esm_c": 90}}}]})";
+  testsupport::expect_bad_run(dir, "render s.json --size 32x18 --out o.png", "s.json", "o.png");
+  const testsupport::Outcome r = testsupport::shadowlab(dir, "render s.json --size 32x18 --out o.png");
+  EXPECT_THAT(r.err, ::testing::HasSubstr("lights[0].shadow.params.esm_c")) << r.err;
+}
+
+}  // namespace
