@@ -7,6 +7,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include "cli/cli_common.h"
+#include "scenes/io/exr_header.h"
 #include "scenes/io/quiet_stderr.h"
 
 namespace cli {
@@ -38,6 +39,7 @@ ChannelChoice choose_depth_channel(const std::vector<std::string>& channels, con
 }
 
 OIIO::ImageBuf read_image(const std::string& file) {
+  scenes::io::check_exr_header(file);  // an attribute claiming gigabytes, before OpenEXR allocates them
   const scenes::io::QuietStderr quiet;  // libpng's own line on a broken file; ours follows
   OIIO::ImageBuf buf(file);
   // The header first: a file that claims an absurd size is refused before anything is allocated.
