@@ -46,6 +46,10 @@ for t in "${targets[@]}"; do
   stamp=$build/fuzz-logs/$t.start
   touch "$stamp"
   before=$(find "$artifacts" -type f | wc -l)
+  # Sanitizer reports to files of their own too: the PNG reader silences stderr while libpng runs
+  # (scenes/io/quiet_stderr.h), and a report made in that window would otherwise be lost.
+  rm -f "$build/fuzz-logs/$t.sanitizer".*
+  export ASAN_OPTIONS="log_path=$build/fuzz-logs/$t.sanitizer" UBSAN_OPTIONS="log_path=$build/fuzz-logs/$t.sanitizer"
   # Limits: 10 s per input, 2 GiB resident, no single allocation over 1 GiB (a reader that allocates what a
   # header claims before checking it shows up here as a finding). Leak checking stays on (the default).
   "$build/tests/fuzz/$t" -dict="$here/dict/shadowlab.dict" -max_total_time="$seconds" -timeout=10 \
@@ -61,9 +65,10 @@ for t in "${targets[@]}"; do
     "$t" "$seconds" "${runs:-?}" "${cov:-?}" "${ft:-?}" "$files" "$rc" "$found"
   if [ "$rc" -ne 0 ] || [ "$found" -ne 0 ]; then
     status=1
-    grep -m1 -E 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error|==ERROR' "$log" | sed 's/^/  /'
+    cat "$log" "$build/fuzz-logs/$t.sanitizer".* 2>/dev/null |
+      grep -a -m1 -E 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error|==ERROR' | sed 's/^/  /'
     find "$artifacts" -type f -newer "$stamp" | head -3 | sed "s|^|  reproduce: $build/tests/fuzz/$t |"
-    echo "  log: $log"
+    echo "  log: $log (and $build/fuzz-logs/$t.sanitizer.PID)"
   fi
 done
 exit $status
