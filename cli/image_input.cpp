@@ -5,8 +5,10 @@
 #include <cstdint>
 
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imagecache.h>
 
 #include "cli/cli_common.h"
+#include "scenes/io/exr_header.h"
 #include "scenes/io/quiet_stderr.h"
 
 namespace cli {
@@ -38,7 +40,12 @@ ChannelChoice choose_depth_channel(const std::vector<std::string>& channels, con
 }
 
 OIIO::ImageBuf read_image(const std::string& file) {
+  scenes::io::check_exr_header(file);  // an attribute claiming gigabytes, before OpenEXR allocates them
   const scenes::io::QuietStderr quiet;  // libpng's own line on a broken file; ours follows
+  // ImageBuf reads the header through OpenImageIO's shared ImageCache, which keeps it by file name: a file
+  // rewritten since an earlier read in this process would be sized by its old header and its pixels written
+  // past the buffer (fuzz_image_input: a 4 x 4 x 2 EXR, then an 8 x 8 one at the same path). Forget it first.
+  OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(file));
   OIIO::ImageBuf buf(file);
   // The header first: a file that claims an absurd size is refused before anything is allocated.
   const OIIO::ImageSpec& spec = buf.spec();

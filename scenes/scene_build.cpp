@@ -3,6 +3,7 @@
 #include "scenes/scene_build.h"
 
 #include <algorithm>
+#include <limits>
 #include <cctype>
 #include <cerrno>
 #include <system_error>
@@ -223,10 +224,11 @@ class Builder {
     out_.lights = std::move(lights);
   }
 
-  // Distance from p to the farthest corner of a box, a little more, at least a millimetre.
+  // Distance from p to the farthest corner of a box, a little more, at least a millimetre. In double: the
+  // squares of a scene 10^20 m across overflow a float, and an infinite range reads as none at all.
   static float reach(const glm::vec3& p, const Aabb& b) {
-    const glm::vec3 far = glm::max(glm::abs(p - b.min), glm::abs(p - b.max));
-    return std::max(1.01f * glm::length(far), 1e-3f);
+    const glm::dvec3 far = glm::max(glm::abs(glm::dvec3(p) - glm::dvec3(b.min)), glm::abs(glm::dvec3(p) - glm::dvec3(b.max)));
+    return float(std::clamp(1.01 * glm::length(far), 1e-3, double(std::numeric_limits<float>::max())));
   }
 
   struct Imported {

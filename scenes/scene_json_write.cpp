@@ -181,8 +181,8 @@ Json shadow_json(const ShadowSettings& s) {
   j["poisson_spread"] = exact(s.poisson_spread);
   if (!s.params.empty()) {
     Json p = Json::object();
-    for (const auto& [key, value] : s.params)
-      std::visit([&](const auto& v) { p[key] = v; }, value);
+    for (const auto& param : s.params)  // not a structured binding: clang 14 cannot capture one in a lambda
+      std::visit([&](const auto& v) { p[param.first] = v; }, param.second);
     j["params"] = p;
   }
   return j;

@@ -13,12 +13,14 @@
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <exception>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/io/atomic_write.h"
+#include "scenes/io/exr_header.h"
 #include "scenes/io/io_error.h"
 
 namespace scenes::io {
@@ -137,14 +139,21 @@ void write_exr_map(WriteBatch& batch, const std::filesystem::path& path, const E
 ExrMap read_exr_map(const std::filesystem::path& path, const std::string& channel) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw IoError(path, "no such file");
+  check_exr_header(path);
   try {
     Imf::InputFile in(path.c_str());
     const Imf::Header& h = in.header();
     if (!h.channels().findChannel(channel)) throw IoError(path, "no " + channel + " channel");
     const Imath::Box2i dw = h.dataWindow();
+    // The size a header claims, refused before anything is allocated for it (in 64 bits: the window may span
+    // the whole int range). The bound is the one inspect and diff apply to any image (cli/image_input.cpp).
+    const int64_t width = int64_t(dw.max.x) - dw.min.x + 1, height = int64_t(dw.max.y) - dw.min.y + 1;
+    if (width < 1 || height < 1 || width > 65536 || height > 65536 || width * height > (int64_t(1) << 30))
+      throw IoError(path, "data window " + std::to_string(width) + " x " + std::to_string(height) +
+                              " is beyond what a map may hold (65536 per side, 2^30 values)");
     ExrMap m;
-    m.width = dw.max.x - dw.min.x + 1;
-    m.height = dw.max.y - dw.min.y + 1;
+    m.width = int(width);
+    m.height = int(height);
     m.z.resize(size_t(m.width) * size_t(m.height));
     // Read top first (OpenEXR addresses pixel (x, y) at base + x·xStride + y·yStride, so base is shifted by
     // the data window's origin), then flip into GL order.
@@ -202,6 +211,7 @@ ExrMap read_exr_map(const std::filesystem::path& path, const std::string& channe
 std::vector<std::string> exr_channel_names(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw IoError(path, "no such file");
+  check_exr_header(path);
   try {
     Imf::InputFile in(path.c_str());
     std::vector<std::string> names;

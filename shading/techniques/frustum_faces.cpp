@@ -235,6 +235,10 @@ std::unique_ptr<LightShadow> plan_frustum_faces(const LightDesc& light, const Sh
   }
   const FaceWarp warp = p.text("face_warp") == "lispsm" ? FaceWarp::lispsm : FaceWarp::exact;
   FacePlan plan = plan_face_maps(light.direction, in.camera, range, in.casters, c.map_size, warp);
+  // Issue 23: a scene 10^30 m across left no face, and an empty map set then failed as "width 0".
+  if (plan.faces.empty())
+    throw TechniqueError("shadow.technique: frustum-faces: the light sees no face of the camera's view frustum "
+                         "between the receivers' near and far distances (is the scene's extent beyond a float's?)");
   return std::make_unique<FaceShadow>(std::move(plan), light, c, p.text("map_layout") == "atlas");
 }
 

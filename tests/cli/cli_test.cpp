@@ -242,3 +242,19 @@ TEST(CliAliasing, RenderMeasuresAliasingAndWritesItsHeatMap) {
   EXPECT_FALSE(fs::exists(dir / "h.png"));
   testsupport::expect_bad_run(dir, "render duel --size 32x32 --out g.png --aliasing h.jpg", "--aliasing", "g.png");
 }
+
+namespace {
+
+// Issue 23: an EXR whose header declares a 2 GiB string attribute made `inspect` (and `diff`, through
+// OpenImageIO) allocate 2.2 GB and spend over a minute before failing; both answer from the size field.
+TEST_F(Cli, ExrAttributeClaimingGigabytesFailsFast) {
+  ASSERT_EQ(shadowlab(dir, shadowmap("")).code, 0);
+  std::string bytes = slurp(dir / "d.exr");
+  std::string attribute("note\0string\0\xff\xff\xff\x7f", 16);  // size 2^31 - 1, little-endian
+  write(dir / "huge.exr", bytes.substr(0, 8) + attribute + "abcd" + bytes.substr(8));
+  expect_bad("inspect huge.exr", "huge.exr");
+  expect_bad("diff huge.exr d.exr", "huge.exr");
+  expect_bad("inspect huge.exr --png p.png", "huge.exr", "p.png");
+}
+
+}  // namespace

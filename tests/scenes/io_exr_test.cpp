@@ -1,6 +1,7 @@
 // EXR shadow maps: written then read back by shadowlab, by OpenEXR directly (row order on disk), and by the
 // command-line tools exrheader and oiiotool (which must show the Z channel and the matrices); errors name the
 // file and leave nothing behind.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -13,9 +14,12 @@
 #include <OpenEXR/ImfOutputFile.h>
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -249,3 +253,65 @@ TEST(IoExr, PassViewportsOutsideTheMapAreRefused) {
     EXPECT_EQ(std::string(e.what()), file.string() + ": shadowlab:pass0:viewport lies outside the 4 x 4 map");
   }
 }
+
+namespace exr_header_tests {
+
+// A valid 4 × 4 Z map on disk, as bytes, for tests that then damage its header.
+std::string small_map_bytes(const fs::path& dir) {
+  raster::DepthTarget target(4, 4, raster::DepthFormat::d32f);
+  ExrMap m = scenes::io::exr_map_from(target);
+  scenes::io::write_exr_map(dir / "small.exr", m);
+  std::ifstream in(dir / "small.exr", std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+void put(const fs::path& file, const std::string& bytes) {
+  std::ofstream(file, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+// Issue 23: a string attribute whose size field says 2^31 − 1 bytes made OpenEXR grow a string to 2 GB (over a
+// minute) before failing at the end of the file; it is refused from the size field alone, in milliseconds.
+TEST(IoExr, AnAttributeLargerThanTheFileIsRefusedBeforeReading) {
+  const fs::path dir = testsupport::temp_dir("io_exr_huge_attribute");
+  const std::string bytes = small_map_bytes(dir);
+  std::string attribute = std::string("note\0string\0", 12);
+  const uint32_t size = 0x7fffffff;
+  attribute.append(reinterpret_cast<const char*>(&size), 4);  // little-endian, as EXR stores it
+  attribute += "abcd";
+  const fs::path file = dir / "huge_attribute.exr";
+  put(file, bytes.substr(0, 8) + attribute + bytes.substr(8));
+  const std::string expected = file.string() + ": header attribute 'note' (string) declares 2147483647 bytes, more than the ";
+  for (int which = 0; which < 2; ++which) {
+    try {
+      if (which == 0) scenes::io::exr_channel_names(file);
+      else scenes::io::read_exr_map(file);
+      FAIL() << "no exception";
+    } catch (const IoError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(expected, 0), 0u) << e.what();
+    }
+  }
+}
+
+// A data window wider than any map (100000 × 4) over a file of a few hundred bytes: OpenEXR refuses it from
+// the header, under the 65536-a-side limit check_exr_header sets (read_exr_map's own check, 65536 a side and
+// 2^30 values, stands behind it for files whose line-offset table holds up).
+TEST(IoExr, ADataWindowWiderThanAnyMapIsRefusedFromTheHeader) {
+  const fs::path dir = testsupport::temp_dir("io_exr_huge_window");
+  std::string bytes = small_map_bytes(dir);
+  const std::string key("dataWindow\0box2i\0", 17);
+  const size_t at = bytes.find(key);
+  ASSERT_NE(at, std::string::npos);
+  const int32_t box[4] = {0, 0, 99999, 3};
+  bytes.replace(at + key.size() + 4, 16, reinterpret_cast<const char*>(box), 16);
+  const fs::path file = dir / "huge_window.exr";
+  put(file, bytes);
+  try {
+    scenes::io::read_exr_map(file);
+    FAIL() << "no exception";
+  } catch (const IoError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": ", 0), 0u) << e.what();
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("exceeds the maximum width")) << e.what();
+  }
+}
+
+}  // namespace exr_header_tests

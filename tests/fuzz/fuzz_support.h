@@ -1,0 +1,71 @@
+// What every fuzz target shares: the input as a file (the readers under test take paths, as the commands do),
+// the errors a reader may answer with, and a tiny frame so whole-scene targets reach the rasterizer.
+// Anything else escaping a target (std::out_of_range, std::bad_alloc, a sanitizer report) is a finding.
+#pragma once
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "raster/renderer.h"
+#include "scenes/frame/frame.h"
+#include "scenes/io/io_error.h"
+#include "scenes/scene.h"
+#include "scenes/scene_error.h"
+
+namespace fuzz {
+
+// A folder of this process's own under the temporary directory (several fuzzers run side by side with -jobs);
+// it is empty apart from the input, so relative references in a fuzzed file (glTF buffers, textures) miss.
+inline const std::filesystem::path& work_dir() {
+  static const std::filesystem::path dir = [] {
+    std::filesystem::path d = std::filesystem::temp_directory_path() / ("shadowlab-fuzz-" + std::to_string(getpid()));
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+// Writes the input to work_dir()/name and returns the path.
+inline std::filesystem::path input_file(const uint8_t* data, size_t size, const std::string& name) {
+  const std::filesystem::path path = work_dir() / name;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
+  out.close();
+  if (!out) throw std::runtime_error("fuzz harness: cannot write " + path.string());
+  return path;
+}
+
+// Runs `body`, accepting exactly the errors the command line reports as a user's mistake (cli/main.cpp):
+// SceneError, IoError, and std::invalid_argument (FrameError, DrawError, TargetSizeError). `Extra` adds one
+// more accepted type (CliError for the cli/ readers).
+template <typename Extra = scenes::SceneError, typename Body>
+void expect_clean_errors(Body&& body) {
+  try {
+    body();
+  } catch (const Extra&) {
+  } catch (const scenes::SceneError&) {
+  } catch (const scenes::io::IoError&) {
+  } catch (const std::invalid_argument&) {
+  }
+}
+
+// Renders every light's shadow and the camera pass at 16 × 16 with 32-texel maps, inline (no worker
+// threads): NaN, infinite, huge and degenerate geometry reaches clipping, setup and the depth passes while one
+// run stays in the milliseconds. The scene's own map sizes are checked by resolve_light before the override.
+inline void render_tiny(const scenes::Scene& scene) {
+  static raster::Renderer renderer(0);
+  frame::FrameConfig config;
+  config.width = 16;
+  config.height = 16;
+  config.map_size = 32;
+  config.export_maps = true;
+  const frame::Frame f = frame::render_frame(scene, config, renderer);
+  (void)frame::export_maps(f);
+}
+
+}  // namespace fuzz
