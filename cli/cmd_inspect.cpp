@@ -41,9 +41,6 @@ nlohmann::json matrix_json(bool present, const glm::mat4& m) {
 
 nlohmann::json or_null(const std::string& s) { return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(s); }
 
-// A float that JSON can hold: NaN and infinities become null.
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
 // Where file `index` of `count` gets its preview: --png itself for one file, DIR/<stem>.png for several.
 std::filesystem::path preview_path(const InspectArgs& a, const std::string& file) {
   if (a.files.size() == 1) return a.png;
@@ -69,12 +66,12 @@ nlohmann::json inspect_map(const InspectArgs& a, const std::string& file, std::o
                       {"encoding", or_null(map.encoding)},
                       {"texels", s.texels},
                       {"nan_texels", s.nan},
-                      {"min", s.texels > s.nan ? number(s.min) : nlohmann::json(nullptr)},
-                      {"max", s.texels > s.nan ? number(s.max) : nlohmann::json(nullptr)},
+                      {"min", s.texels > s.nan ? json_number(s.min) : nlohmann::json(nullptr)},
+                      {"max", s.texels > s.nan ? json_number(s.max) : nlohmann::json(nullptr)},
                       {"covered_texels", s.covered},
                       {"coverage", s.coverage()},
-                      {"covered_min", s.covered ? number(s.covered_min) : nlohmann::json(nullptr)},
-                      {"covered_max", s.covered ? number(s.covered_max) : nlohmann::json(nullptr)},
+                      {"covered_min", s.covered ? json_number(s.covered_min) : nlohmann::json(nullptr)},
+                      {"covered_max", s.covered ? json_number(s.covered_max) : nlohmann::json(nullptr)},
                       {"world_to_camera", matrix_json(map.has_world_to_camera, map.world_to_camera)},
                       {"world_to_ndc", matrix_json(map.has_world_to_ndc, map.world_to_ndc)}};
   nlohmann::json passes = nlohmann::json::array();
@@ -111,9 +108,9 @@ nlohmann::json inspect_frame(const InspectArgs& a, const std::string& file) {
   nlohmann::json channels = nlohmann::json::array();
   for (int c = 0; c < spec.nchannels; ++c)
     channels.push_back({{"name", spec.channel_name(c)},
-                        {"min", number(st.min[size_t(c)])},
-                        {"max", number(st.max[size_t(c)])},
-                        {"mean", number(st.avg[size_t(c)])}});
+                        {"min", json_number(st.min[size_t(c)])},
+                        {"max", json_number(st.max[size_t(c)])},
+                        {"mean", json_number(st.avg[size_t(c)])}});
   return {{"file", file},
           {"kind", "frame"},
           {"format", "png"},

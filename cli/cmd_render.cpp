@@ -5,8 +5,6 @@
 // and a printf frame field (`frame_%04d.png`) for image sequences. This file only turns arguments into
 // frame::FrameConfig: the technique parameters' options come from the vocabulary's ParamSpec lists.
 #include <algorithm>
-#include <cctype>
-#include <variant>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -20,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.h"
+#include "cli/camera_choice.h"
 #include "cli/eval_report.h"
 #include "cli/json_output.h"
 #include "cli/render_line.h"
@@ -30,8 +29,6 @@
 #include "scenes/io/exr_image.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/png_frame.h"
-#include "scenes/camera_math.h"
-#include "scenes/scene_queries.h"
 #include "scenes/shadow_settings.h"
 #include "scenes/stage.h"
 
@@ -139,70 +136,6 @@ std::vector<frame::AovChannel> parse_aov_list(const std::string& list, const std
 }
 
 void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& args);
-
-// --camera orbit:AZ,EL[,DIST]: azimuth (from +Z towards +X) and elevation in degrees, distance in metres (0: framed).
-glm::vec3 parse_orbit(const std::string& spec) {
-  const std::string body = spec.substr(6);
-  std::vector<float> v;
-  size_t start = 0;
-  while (start <= body.size() && v.size() < 4) {
-    const size_t end = std::min(body.find(',', start), body.size());
-    const std::string part = body.substr(start, end - start);
-    size_t used = 0;
-    float x = 0;
-    try {
-      x = std::stof(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (part.empty() || used != part.size() || !std::isfinite(x))
-      throw CliError("--camera", "expected orbit:AZ,EL[,DIST] with numbers, got '" + spec + "'");
-    v.push_back(x);
-    start = end + 1;
-  }
-  if (v.size() < 2 || v.size() > 3) throw CliError("--camera", "expected orbit:AZ,EL[,DIST], got '" + spec + "'");
-  if (!(v[1] >= -89.0f && v[1] <= 89.0f)) throw CliError("--camera", "orbit elevation must be within -89..89 degrees");
-  if (v.size() == 3 && !(v[2] > 0.0f)) throw CliError("--camera", "orbit distance must be above 0");
-  return {v[0], v[1], v.size() == 3 ? v[2] : 0.0f};
-}
-
-// The camera --camera picks (adding an orbit camera to the scene), as an index into scene.cameras.
-size_t choose_camera(scenes::Scene& scene, const std::string& spec) {
-  if (spec.empty()) return 0;
-  if (spec.rfind("orbit:", 0) == 0) {
-    const glm::vec3 o = parse_orbit(spec);
-    // Around what casts shadows (a staged ground does not), framed like the default camera.
-    scenes::Aabb box = scenes::scene_bounds(scene, scenes::InstanceFilter::casters);
-    if (box.empty()) box = scenes::scene_bounds(scene);
-    scenes::Camera c = scenes::frame_camera(box, "orbit");
-    const float framed = glm::length(c.position - c.target);
-    const float distance = o.z > 0.0f ? o.z : framed;
-    const float az = glm::radians(o.x), el = glm::radians(o.y);
-    c.position = c.target + distance * glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-    if (auto* p = std::get_if<scenes::Perspective>(&c.projection)) {
-      const float radius = 0.5f * glm::length(scenes::scene_bounds(scene).size());
-      p->near = std::max(1e-3f * distance, distance - 1.5f * std::max(radius, 1e-3f));
-      p->far = distance + 1.5f * std::max(radius, 1e-3f);
-    }
-    scene.cameras.push_back(c);
-    return scene.cameras.size() - 1;
-  }
-  bool digits = !spec.empty() && spec.size() < 10;
-  for (char ch : spec) digits &= std::isdigit(static_cast<unsigned char>(ch)) != 0;
-  if (digits) {
-    const size_t i = std::stoul(spec);
-    if (i >= scene.cameras.size())
-      throw CliError("--camera", "camera " + spec + " does not exist (the scene has " +
-                                     std::to_string(scene.cameras.size()) + ")");
-    return i;
-  }
-  std::string names;
-  for (size_t i = 0; i < scene.cameras.size(); ++i) {
-    if (scene.cameras[i].name == spec) return i;
-    names += (names.empty() ? "" : ", ") + (scene.cameras[i].name.empty() ? std::to_string(i) : scene.cameras[i].name);
-  }
-  throw CliError("--camera", "no camera named '" + spec + "' (cameras: " + names + "; or an index, or orbit:AZ,EL)");
-}
 
 // Every check of a job's arguments that needs no rendering, so a bad job (or batch line) fails before any work.
 void check_job(const RenderArgs& a) {

@@ -10,6 +10,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/image_input.h"
+#include "cli/json_output.h"
 #include "raster/target.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/png_frame.h"
@@ -36,8 +37,6 @@ void check_same_size(const std::string& a, const std::string& b, const OIIO::Ima
   if (sa.nchannels != sb.nchannels)
     throw CliError(b, std::to_string(sb.nchannels) + " channels where " + a + " has " + std::to_string(sa.nchannels));
 }
-
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 // The difference image: per pixel the largest absolute difference of any channel, through OpenImageIO's
 // "inferno" colour map over [0, scale] (NaN differences white). An sRGB target ready for write_png.
@@ -115,10 +114,10 @@ nlohmann::json compare_images(const std::string& a, const std::string& b, const 
   const double max = nan_pixels ? INFINITY : cr.maxerror;
 
   j["width"] = x.spec().width, j["height"] = x.spec().height, j["pixels"] = pixels;
-  j["max"] = number(max);
+  j["max"] = json_number(max);
   j["max_at"] = cr.maxerror > 0 ? nlohmann::json({cr.maxx, cr.maxy}) : nlohmann::json(nullptr);
   j["mean"] = cr.meanerror, j["rmse"] = cr.rms_error;
-  j["psnr"] = number(cr.PSNR);  // infinite (null) for identical images
+  j["psnr"] = json_number(cr.PSNR);  // infinite (null) for identical images
   j["nan_pixels"] = nan_pixels;
   j["tolerance"] = o.tolerance;
   j["over"] = over, j["over_percent"] = share;

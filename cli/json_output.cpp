@@ -1,6 +1,7 @@
 // The version block and JSON printing (see json_output.h).
 #include "cli/json_output.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -33,6 +34,8 @@ std::string version_line() {
   return std::string("shadowlab ") + SHADOWLAB_VERSION + " (revision " + SHADOWLAB_REVISION + ", SIMD path " +
          simd_path() + ")";
 }
+
+nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 void print_json(nlohmann::json doc) {
   doc["shadowlab"] = version_json();

@@ -11,6 +11,9 @@ nlohmann::json version_json();
 // The version line of `shadowlab --version`.
 std::string version_line();
 
+// A number JSON can hold: NaN and infinities become null.
+nlohmann::json json_number(double v);
+
 // Prints `doc` (with "shadowlab": version_json() added) to stdout, indented, with a final newline.
 void print_json(nlohmann::json doc);
 

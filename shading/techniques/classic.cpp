@@ -63,24 +63,9 @@ class ClassicShadow final : public LightShadow {
     classic_visibility_x8(reader_, q, vis);
   }
   bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const override {
-    const ShadowPass& pass = set_.passes.at(0);
-    const glm::vec2 size(float(pass.viewport.width), float(pass.viewport.height));
-    auto texel = [&](glm::vec3 q, glm::vec2& t) { return map_texel(reader_.shadow, reader_.perspective, size, q, t); };
-    if (!texel(p, out[0])) return false;
-    for (size_t i = 0; i < others.size(); ++i)
-      if (!texel(others[i], out[i + 1])) return false;
-    return true;
+    return one_pass_texels(set_, reader_.shadow, p, others, out);
   }
-  std::vector<MapRecord> maps() const override {
-    const ShadowPass& p = set_.passes.at(0);
-    MapRecord m;
-    m.target = set_.targets.at(p.target).get();
-    m.technique = to_string(Technique::shadowmap);
-    m.encoding = info(Technique::shadowmap).encoding;
-    m.world_to_camera = p.view;
-    m.world_to_ndc = p.proj * p.view;
-    return {m};
-  }
+  std::vector<MapRecord> maps() const override { return {one_pass_record(set_, Technique::shadowmap)}; }
 
  private:
   ClassicLight light_;
@@ -91,14 +76,45 @@ class ClassicShadow final : public LightShadow {
 
 }  // namespace
 
-std::unique_ptr<LightShadow> plan_classic(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {
+ClassicLight classic_light(const LightDesc& light) {
   ClassicLight l;
   l.kind = light.type == LightType::spot ? LightKind::spot : LightKind::directional;
   l.position = light.position;
   l.direction = light.direction;
   l.outer_angle = light.outer_angle;
   l.range = light.range;
-  const ClassicSettings s{c.filter, c.filter_params, c.bias, c.cull_front, c.map_size, c.depth_format};
+  return l;
+}
+
+ClassicSettings classic_settings(const ShadowConfig& c) {
+  return {c.filter, c.filter_params, c.bias, c.cull_front, c.map_size, c.depth_format};
+}
+
+bool one_pass_texels(const ShadowMapSet& set, const glm::mat4& shadow, glm::vec3 p, std::span<const glm::vec3> others,
+                     std::span<glm::vec2> out) {
+  const ShadowPass& pass = set.passes.at(0);
+  const glm::vec2 size(float(pass.viewport.width), float(pass.viewport.height));
+  auto texel = [&](glm::vec3 q, glm::vec2& t) { return map_texel(shadow, pass.perspective, size, q, t); };
+  if (!texel(p, out[0])) return false;
+  for (size_t i = 0; i < others.size(); ++i)
+    if (!texel(others[i], out[i + 1])) return false;
+  return true;
+}
+
+MapRecord one_pass_record(const ShadowMapSet& set, Technique technique) {
+  const ShadowPass& p = set.passes.at(0);
+  MapRecord m;
+  m.target = set.targets.at(p.target).get();
+  m.technique = to_string(technique);
+  m.encoding = info(technique).encoding;
+  m.world_to_camera = p.view;
+  m.world_to_ndc = p.proj * p.view;
+  return m;
+}
+
+std::unique_ptr<LightShadow> plan_classic(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {
+  const ClassicLight l = classic_light(light);
+  const ClassicSettings s = classic_settings(c);
   ClassicFit fit{in.receivers, in.casters, std::nullopt};
   if (Params(c).text("fit") == "fixed")
     fit.fixed = fixed_directional(l.direction, glm::vec3(0.0f), {10.0f, 10.0f}, -10.0f, 20.0f);

@@ -52,6 +52,17 @@ struct ClassicFit {
   std::optional<LightMatrices> fixed;
 };
 
+// The light and settings of a classic map from a light's description and merged configuration: shared by every
+// technique built on one classic map (shadowmap, the filtered maps, PCSS).
+ClassicLight classic_light(const LightDesc& light);
+ClassicSettings classic_settings(const ShadowConfig& config);
+
+// For techniques whose set is one pass: LightShadow::texel_coords through the map matrix `shadow`, and the
+// map's EXR record labelled `technique`.
+bool one_pass_texels(const ShadowMapSet& set, const glm::mat4& shadow, glm::vec3 p, std::span<const glm::vec3> others,
+                     std::span<glm::vec2> out);
+MapRecord one_pass_record(const ShadowMapSet& set, Technique technique);
+
 // Layout and matrices: one map of settings.map_size² in settings.depth_format.
 ShadowMapSet plan_classic_map(const ClassicLight& light, const ClassicSettings& settings, const ClassicFit& fit);
 

@@ -104,24 +104,9 @@ class FilteredShadow final : public LightShadow {
     for (size_t i = 0; i < q.size(); ++i) vis[i] = filtered_visibility(filtered_.reader, q[i].p, q[i].n);
   }
   bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const override {
-    const ShadowPass& pass = set_.passes.at(0);
-    const glm::vec2 size(float(pass.viewport.width), float(pass.viewport.height));
-    auto texel = [&](glm::vec3 q, glm::vec2& t) { return map_texel(filtered_.reader.shadow, pass.perspective, size, q, t); };
-    if (!texel(p, out[0])) return false;
-    for (size_t i = 0; i < others.size(); ++i)
-      if (!texel(others[i], out[i + 1])) return false;
-    return true;
+    return one_pass_texels(set_, filtered_.reader.shadow, p, others, out);
   }
-  std::vector<MapRecord> maps() const override {
-    const ShadowPass& p = set_.passes.at(0);
-    MapRecord m;
-    m.target = set_.targets.at(p.target).get();
-    m.technique = to_string(id_);
-    m.encoding = info(id_).encoding;
-    m.world_to_camera = p.view;
-    m.world_to_ndc = p.proj * p.view;
-    return {m};
-  }
+  std::vector<MapRecord> maps() const override { return {one_pass_record(set_, id_)}; }
 
  private:
   Technique id_;
@@ -134,13 +119,8 @@ class FilteredShadow final : public LightShadow {
 };
 
 std::unique_ptr<LightShadow> plan_filtered(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {
-  ClassicLight l;
-  l.kind = light.type == LightType::spot ? LightKind::spot : LightKind::directional;
-  l.position = light.position;
-  l.direction = light.direction;
-  l.outer_angle = light.outer_angle;
-  l.range = light.range;
-  const ClassicSettings s{c.filter, c.filter_params, c.bias, c.cull_front, c.map_size, c.depth_format};
+  const ClassicLight l = classic_light(light);
+  const ClassicSettings s = classic_settings(c);
   const ClassicFit fit{in.receivers, in.casters, std::nullopt};
   const MomentParams m = moment_params(c);
   const int radius = int(Params(c).number("blur_radius"));

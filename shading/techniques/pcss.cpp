@@ -131,24 +131,9 @@ class PcssShadow final : public LightShadow {
     for (size_t i = 0; i < q.size(); ++i) vis[i] = pcss_visibility(r_, q[i].p, q[i].n, q[i].frag);
   }
   bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const override {
-    const ShadowPass& pass = set_.passes.at(0);
-    const glm::vec2 size(float(pass.viewport.width), float(pass.viewport.height));
-    auto texel = [&](glm::vec3 q, glm::vec2& t) { return map_texel(r_.classic.shadow, pass.perspective, size, q, t); };
-    if (!texel(p, out[0])) return false;
-    for (size_t i = 0; i < others.size(); ++i)
-      if (!texel(others[i], out[i + 1])) return false;
-    return true;
+    return one_pass_texels(set_, r_.classic.shadow, p, others, out);
   }
-  std::vector<MapRecord> maps() const override {
-    const ShadowPass& p = set_.passes.at(0);
-    MapRecord m;
-    m.target = set_.targets.at(p.target).get();
-    m.technique = to_string(Technique::pcss);
-    m.encoding = info(Technique::pcss).encoding;
-    m.world_to_camera = p.view;
-    m.world_to_ndc = p.proj * p.view;
-    return {m};
-  }
+  std::vector<MapRecord> maps() const override { return {one_pass_record(set_, Technique::pcss)}; }
 
  private:
   ClassicLight light_;
@@ -161,13 +146,8 @@ class PcssShadow final : public LightShadow {
 }  // namespace
 
 std::unique_ptr<LightShadow> plan_pcss(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {
-  ClassicLight l;
-  l.kind = light.type == LightType::spot ? LightKind::spot : LightKind::directional;
-  l.position = light.position;
-  l.direction = light.direction;
-  l.outer_angle = light.outer_angle;
-  l.range = light.range;
-  const ClassicSettings s{c.filter, c.filter_params, c.bias, c.cull_front, c.map_size, c.depth_format};
+  const ClassicLight l = classic_light(light);
+  const ClassicSettings s = classic_settings(c);
   const ClassicFit fit{in.receivers, in.casters, std::nullopt};
   const Params p(c);
   const float size = float(l.kind == LightKind::spot ? p.number("light_radius") : p.number("light_angle"));
