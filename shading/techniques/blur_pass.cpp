@@ -41,12 +41,13 @@ struct FullScreenShader {
 
 struct EncodeShader : FullScreenShader<EncodeShader> {
   const raster::DepthTarget* src = nullptr;
+  raster::Rect region;
   LightDepth depth;
   MomentParams params;
   glm::vec4 texel(int x, int y) const {
     // Helper lanes of the last quad pair may lie past the edge: they read the edge texel.
-    x = std::min(x, src->width() - 1), y = std::min(y, src->height() - 1);
-    return moments(params, depth.from_window(src->value(x, y)));
+    x = std::min(x, region.width - 1), y = std::min(y, region.height - 1);
+    return moments(params, depth.from_window(src->value(region.x + x, region.y + y)));
   }
 };
 
@@ -154,11 +155,19 @@ raster::DrawStats blur_with(raster::Renderer& renderer, const raster::ColorTarge
 
 raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::DepthTarget& src, const LightDepth& depth,
                                  const MomentParams& p, raster::ColorTarget& out) {
+  return encode_moments(renderer, src, raster::Rect{0, 0, src.width(), src.height()}, depth, p, out);
+}
+
+raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::DepthTarget& src, raster::Rect region,
+                                 const LightDepth& depth, const MomentParams& p, raster::ColorTarget& out) {
   check_float_target(out, "encode_moments");
-  if (out.width() != src.width() || out.height() != src.height())
-    throw std::invalid_argument("encode_moments: the moment target must have the depth map's size");
+  if (region.x < 0 || region.y < 0 || region.width < 1 || region.height < 1 ||
+      region.x + region.width > src.width() || region.y + region.height > src.height())
+    throw std::invalid_argument("encode_moments: the region lies outside the depth map");
+  if (out.width() != region.width || out.height() != region.height)
+    throw std::invalid_argument("encode_moments: the moment target must have the region's size");
   EncodeShader s;
-  s.src = &src, s.depth = depth, s.params = p;
+  s.src = &src, s.region = region, s.depth = depth, s.params = p;
   return renderer.draw(raster::RenderTargets{nullptr, &out}, full_screen_state(), s,
                        std::span<const glm::vec4>(kFullScreen));
 }

@@ -14,6 +14,11 @@ namespace shading::tech {
 raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::DepthTarget& src, const LightDepth& depth,
                                  const MomentParams& p, raster::ColorTarget& out);
 
+// The same over one region of src (a pass's viewport in an atlas): out(x, y) reads src(region.x + x,
+// region.y + y), and out has the region's size.
+raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::DepthTarget& src, raster::Rect region,
+                                 const LightDepth& depth, const MomentParams& p, raster::ColorTarget& out);
+
 // One blur pass: dst(x, y) = mean of src over 2·radius + 1 texels along x (or y with `vertical`), coordinates
 // clamped to the edge; only the first `channels` components are filtered (the rest are written 0). radius is
 // 0..16.

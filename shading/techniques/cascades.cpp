@@ -4,12 +4,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "shading/lookup.h"
+#include "shading/techniques/filtered.h"
 #include "shading/techniques/slice_set.h"
 
 namespace shading::tech {
@@ -98,16 +101,42 @@ SliceChoice choose_slice(std::span<const float> splits, float blend, float dista
 
 namespace {
 
+// Moment maps of the slices (the cascades' `moments` parameter): each slice's depth map encoded and blurred on
+// its own, read with one bilinear lookup and the kind's visibility formula instead of the light's filter.
+struct SliceMoments {
+  MomentParams params;
+  int blur_radius = 2;
+  std::vector<MomentMap> maps;  // one per slice, after build
+  Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
+};
+
 class CascadeShadow final : public LightShadow {
  public:
   CascadeShadow(Technique t, CascadePlan plan, const CascadeSettings& s, const LightDesc& light,
-                const ShadowConfig& c, const CameraView& camera)
+                const ShadowConfig& c, const CameraView& camera, std::optional<SliceMoments> moments)
       : splits_(std::move(plan.splits)), blend_(s.blend), camera_(camera),
-        set_(t, plan.fits, labels(t, plan.fits.size()), light, c, s.atlas) {}
+        set_(t, plan.fits, labels(t, plan.fits.size()), light, c, s.atlas), moments_(std::move(moments)) {}
 
-  raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& c) override { return set_.build(renderer, c); }
+  raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& c) override {
+    raster::DrawStats stats = set_.build(renderer, c);
+    if (moments_) {
+      moments_->maps.resize(set_.size());
+      for (size_t k = 0; k < set_.size(); ++k)
+        stats += filter_pass(renderer, set_.set(), k, moments_->params, moments_->blur_radius, moments_->maps[k]);
+    }
+    return stats;
+  }
 
   void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const override {
+    if (moments_) {
+      for (size_t i = 0; i < q.size(); ++i) {
+        const SliceChoice c = choose_slice(splits_, blend_, view_distance(camera_, q[i].p));
+        float v = moment_slice_visibility(c.slice, q[i]);
+        if (c.next_weight > 0.0f) v += c.next_weight * (moment_slice_visibility(c.slice + 1, q[i]) - v);
+        vis[i] = v;
+      }
+      return;
+    }
     const SliceLight& l = set_.light();
     dispatch_filter(l.filter_kind, l.filter.pcf_taps, [&]<class F, bool kPcf>() {
       for (size_t i = 0; i < q.size(); ++i) {
@@ -121,7 +150,9 @@ class CascadeShadow final : public LightShadow {
   }
 
   // Eight wide: the points of the pair grouped by slice; points in a blend band read their next slice too.
+  // Moment maps are read point by point (one bilinear lookup each).
   void visibility_x8(std::span<const ShadowQuery> q, std::span<float> vis) const override {
+    if (moments_) return visibility(q, vis);
     const SliceLight& l = set_.light();
     std::array<SliceChoice, 8> c;
     bool blends = false;
@@ -155,10 +186,21 @@ class CascadeShadow final : public LightShadow {
     return out;
   }
 
+  // Slice k's moment map at the point: the depth slice_context gives (bias applied as for the depth maps) against
+  // the filtered moments; lit outside the map, as the depth maps' border.
+  float moment_slice_visibility(size_t k, const ShadowQuery& q) const {
+    SampleContext ctx;
+    if (!slice_context(set_.map(k), set_.light(), q.p, q.n, q.frag, ctx)) return 1.0f;
+    if (!(ctx.st.x >= 0.0f && ctx.st.x <= 1.0f && ctx.st.y >= 0.0f && ctx.st.y <= 1.0f)) return 1.0f;
+    const glm::vec4 m = texture(moments_->maps[k].view, moments_->sampler, ctx.st);
+    return moment_visibility(moments_->params, m, std::min(ctx.ref, 1.0f));
+  }
+
   std::vector<float> splits_;
   float blend_;
   CameraView camera_;
   SliceSet set_;
+  std::optional<SliceMoments> moments_;
 };
 
 }  // namespace
@@ -177,8 +219,24 @@ std::unique_ptr<LightShadow> plan_cascades(const LightDesc& light, const ShadowC
   if (s.stabilize && s.lispsm)
     throw TechniqueError(p.where("stabilize") + ": a LiSPSM warp (cascade_warp = lispsm) changes with every view "
                                                 "and cannot be stabilised");
+  std::optional<SliceMoments> moments;
+  if (const std::string kind = p.text("moments"); kind != "none") {
+    if (s.lispsm)
+      throw TechniqueError(p.where("moments") + ": " + kind + " needs orthographic slices; a LiSPSM warp "
+                           "(cascade_warp = lispsm) stores a depth that is not linear along the light");
+    if (c.filter != FilterKind::pcf || c.filter_params.pcf_taps)
+      throw TechniqueError(c.where.substr(0, c.where.size() - std::string_view("params.").size()) + "filter: " +
+                           std::string(to_string(c.filter)) + " is not used with moments = " + kind +
+                           " (the blurred moments are read with one bilinear lookup)");
+    const MomentKind k = kind == "esm" ? MomentKind::esm
+                       : kind == "vsm" ? MomentKind::vsm
+                       : kind == "evsm2" ? MomentKind::evsm2 : MomentKind::evsm4;
+    moments = SliceMoments{moment_params(k, c), int(p.number("blur_radius")), {}, {}};
+    moments->sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
+  }
   CascadePlan plan = plan_cascade_fits(light, s, c.map_size, in);
-  return std::make_unique<CascadeShadow>(Technique::cascades, std::move(plan), s, light, c, in.camera);
+  return std::make_unique<CascadeShadow>(Technique::cascades, std::move(plan), s, light, c, in.camera,
+                                         std::move(moments));
 }
 
 std::unique_ptr<LightShadow> plan_lispsm(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {
@@ -189,7 +247,7 @@ std::unique_ptr<LightShadow> plan_lispsm(const LightDesc& light, const ShadowCon
   s.visible = p.text("view_range") == "visible";
   if (s.visible && !in.visible) throw TechniqueError(p.where("view_range") + ": visible needs the camera's depth pre-pass");
   CascadePlan plan = plan_cascade_fits(light, s, c.map_size, in);
-  return std::make_unique<CascadeShadow>(Technique::lispsm, std::move(plan), s, light, c, in.camera);
+  return std::make_unique<CascadeShadow>(Technique::lispsm, std::move(plan), s, light, c, in.camera, std::nullopt);
 }
 
 }  // namespace shading::tech

@@ -39,15 +39,26 @@ float filtered_visibility(const FilteredReader& r, glm::vec3 p, glm::vec3 n) {
   return moment_visibility(r.params, texture(r.moments, r.sampler, st), d);
 }
 
+raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& set, size_t pass,
+                              const MomentParams& params, int blur_radius, MomentMap& out) {
+  const ShadowPass& p = set.passes.at(pass);
+  const raster::DepthTarget& depth = *set.targets.at(p.target);
+  const int w = p.viewport.width, h = p.viewport.height;
+  if (!out.map || out.map->width() != w || out.map->height() != h) {
+    out.map = std::make_unique<raster::ColorTarget>(w, h, raster::ColorFormat::rgba32f);
+    out.scratch = std::make_unique<raster::ColorTarget>(w, h, raster::ColorFormat::rgba32f);
+  }
+  raster::DrawStats stats =
+      encode_moments(renderer, depth, p.viewport, LightDepth::of(p.proj, p.perspective), params, *out.map);
+  stats += blur_map(renderer, *out.map, *out.scratch, blur_radius, moment_channels(params.kind));
+  out.view = Texture2D::view(*out.map);
+  return stats;
+}
+
 raster::DrawStats filter_classic_map(raster::Renderer& renderer, const ShadowMapSet& set, const ClassicLight& light,
                                      const BiasParams& bias, const MomentParams& params, int blur_radius,
                                      FilteredMap& out) {
   const ShadowPass& p = set.passes.at(0);
-  const raster::DepthTarget& depth = *set.targets.at(p.target);
-  if (!out.map || out.map->width() != depth.width() || out.map->height() != depth.height()) {
-    out.map = std::make_unique<raster::ColorTarget>(depth.width(), depth.height(), raster::ColorFormat::rgba32f);
-    out.scratch = std::make_unique<raster::ColorTarget>(depth.width(), depth.height(), raster::ColorFormat::rgba32f);
-  }
   FilteredReader& r = out.reader;
   r.shadow = shadow_matrix(p);
   r.view = p.view;
@@ -57,21 +68,24 @@ raster::DrawStats filter_classic_map(raster::Renderer& renderer, const ShadowMap
   r.direction = light.direction;
   r.bias = bias;
   r.params = params;
-  raster::DrawStats stats = encode_moments(renderer, depth, r.depth, params, *out.map);
-  stats += blur_map(renderer, *out.map, *out.scratch, blur_radius, moment_channels(params.kind));
-  r.moments = Texture2D::view(*out.map);
+  const raster::DrawStats stats = filter_pass(renderer, set, 0, params, blur_radius, out.moments);
+  r.moments = out.moments.view;
   return stats;
 }
 
 MomentParams moment_params(const ShadowConfig& c) {
+  switch (c.technique) {
+    case Technique::esm: return moment_params(MomentKind::esm, c);
+    case Technique::evsm2: return moment_params(MomentKind::evsm2, c);
+    case Technique::evsm4: return moment_params(MomentKind::evsm4, c);
+    default: return moment_params(MomentKind::vsm, c);
+  }
+}
+
+MomentParams moment_params(MomentKind kind, const ShadowConfig& c) {
   const Params p(c);
   MomentParams m;
-  switch (c.technique) {
-    case Technique::esm: m.kind = MomentKind::esm; break;
-    case Technique::evsm2: m.kind = MomentKind::evsm2; break;
-    case Technique::evsm4: m.kind = MomentKind::evsm4; break;
-    default: m.kind = MomentKind::vsm; break;
-  }
+  m.kind = kind;
   if (m.kind == MomentKind::esm) {
     m.esm_c = float(p.number("esm_c"));
   } else if (m.kind == MomentKind::vsm) {

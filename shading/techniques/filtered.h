@@ -39,9 +39,20 @@ bool filtered_context(const FilteredReader& r, glm::vec3 p, glm::vec3 n, glm::ve
 // Visibility in [0, 1] of world point p with unit normal n.
 float filtered_visibility(const FilteredReader& r, glm::vec3 p, glm::vec3 n);
 
-// A built classic map set (one pass) turned filterable: the moment target, its blur scratch and the reader.
-struct FilteredMap {
+// One pass of a built depth-map set turned filterable: the moment target (the pass's viewport, encoded then
+// blurred on its own, so the slices of an atlas do not blur into each other), its blur scratch and a view.
+struct MomentMap {
   std::unique_ptr<raster::ColorTarget> map, scratch;
+  Texture2D view;
+};
+
+// Encodes pass `pass` of `set` (built) into `out` and blurs it; the targets are (re)made at the pass's size.
+raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& set, size_t pass,
+                              const MomentParams& params, int blur_radius, MomentMap& out);
+
+// A built classic map set (one pass) turned filterable: its moment map and the reader.
+struct FilteredMap {
+  MomentMap moments;
   FilteredReader reader;
 };
 
@@ -50,8 +61,10 @@ raster::DrawStats filter_classic_map(raster::Renderer& renderer, const ShadowMap
                                      const BiasParams& bias, const MomentParams& params, int blur_radius,
                                      FilteredMap& out);
 
-// The moment kind and its parameters from a ShadowConfig (esm, vsm, evsm2 or evsm4).
+// The moment kind and its parameters from a ShadowConfig whose technique is esm, vsm, evsm2 or evsm4.
 MomentParams moment_params(const ShadowConfig& config);
+// The parameters of moment kind `kind` from a ShadowConfig whose technique lists them (cascades' moments).
+MomentParams moment_params(MomentKind kind, const ShadowConfig& config);
 
 // The registry's factories (technique.h), one per kind; the map is planned as the classic one.
 std::unique_ptr<LightShadow> plan_esm(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);

@@ -89,7 +89,7 @@ struct ParamSpec {
   std::string_view fallback;  // the default, as text
   std::string_view help;
   double lo = 0.0, hi = 0.0;  // number, integer: the accepted range
-  std::array<std::string_view, 3> choices{};  // choice: the accepted values
+  std::array<std::string_view, 5> choices{};  // choice: the accepted values
   std::string_view range_note{};  // number: why the range ends where it does, added to a range refusal
 };
 
@@ -137,19 +137,6 @@ inline constexpr ParamSpec kMapLayoutParam = {
     "map_layout", "--map-layout", ParamKind::choice, "atlas",
     "cascades, frustum-faces: all maps in one atlas target (two per row) or one target each", 0, 0,
     {"atlas", "separate"}};
-inline constexpr ParamSpec kCascadeParams[] = {
-    {"cascades", "--cascades", ParamKind::integer, "4", "cascades: number of slices of the view frustum", 1, 4},
-    {"split_lambda", "--split-lambda", ParamKind::number, "0.75",
-     "cascades: practical split scheme, 1 logarithmic, 0 uniform", 0, 1},
-    {"stabilize", "--stabilize", ParamKind::flag, "false",
-     "cascades: texel-snapped maps around each slice's bounding sphere (no shimmer, less resolution)"},
-    {"cascade_blend", "--cascade-blend", ParamKind::number, "0",
-     "cascades: fraction of a slice, at its far end, blended into the next slice's map", 0, 0.5},
-    {"cascade_warp", "--cascade-warp", ParamKind::choice, "none",
-     "cascades: each slice's map orthographic, or warped by LiSPSM", 0, 0, {"none", "lispsm"}},
-    kMapLayoutParam,
-    kViewRangeParam,
-};
 inline constexpr ParamSpec kLispsmParams[] = {kViewRangeParam};
 inline constexpr ParamSpec kFaceParams[] = {
     {"face_warp", "--face-warp", ParamKind::choice, "exact",
@@ -164,29 +151,54 @@ inline constexpr ParamSpec kFaceParams[] = {
 // EVSM stores exp(c·x) and its square with x in [-1, 1], so c <= ln(FLT_MAX) / 2 = 44.36.
 inline constexpr ParamSpec kBlurParam = {
     "blur_radius", "--blur-radius", ParamKind::integer, "2",
-    "esm, vsm, evsm2, evsm4: box blur radius in texels of the separable blur passes (0: no blur)", 0, 16};
+    "esm, vsm, evsm2, evsm4, cascades' moments: box blur radius in texels of the separable blur passes (0: no blur)", 0, 16};
 inline constexpr ParamSpec kLightBleedParam = {
     "light_bleed", "--light-bleed", ParamKind::number, "0.2",
-    "vsm, evsm2, evsm4: light-bleeding reduction, the Chebyshev bound p remapped by linstep(amount, 1, p)", 0,
+    "vsm, evsm2, evsm4 (also as cascades' moments): light-bleeding reduction, the Chebyshev bound p remapped by linstep(amount, 1, p)", 0,
     0.99};
 inline constexpr ParamSpec kMinVarianceParam = {
     "min_variance", "--min-variance", ParamKind::number, "0.00002",
-    "vsm: smallest variance in the Chebyshev bound (in depth units squared)", 0, 0.01};
-inline constexpr ParamSpec kEsmParams[] = {
-    {"esm_c", "--esm-c", ParamKind::number, "80", "esm: the exponent c of exp(c z); larger is sharper, less leaking",
-     1, 88.72, {}, "exp(c z) overflows 32-bit float storage for c above ln(FLT_MAX) = 88.72"},
-    kBlurParam,
-};
+    "vsm (also as cascades' moments): smallest variance in the Chebyshev bound (in depth units squared)", 0, 0.01};
+inline constexpr ParamSpec kEsmCParam = {
+    "esm_c", "--esm-c", ParamKind::number, "80", "esm (also as cascades' moments): the exponent c of exp(c z); larger is sharper, less leaking",
+    1, 88.72, {}, "exp(c z) overflows 32-bit float storage for c above ln(FLT_MAX) = 88.72"};
+inline constexpr ParamSpec kEvsmPositiveParam = {
+    "evsm_positive", "--evsm-positive", ParamKind::number, "40", "evsm2, evsm4 (also as cascades' moments): exponent of the positive warp",
+    0.1, 44.36, {}, "the second moment exp(2 c) overflows 32-bit float storage for c above 44.36"};
+inline constexpr ParamSpec kEvsmNegativeParam = {
+    "evsm_negative", "--evsm-negative", ParamKind::number, "5", "evsm4 (also as cascades' moments): exponent of the negative warp", 0.1, 44.36,
+    {}, "the second moment exp(2 c) overflows 32-bit float storage for c above 44.36"};
+inline constexpr ParamSpec kEvsmMinVarianceParam = {
+    "evsm_min_variance", "--evsm-min-variance", ParamKind::number, "0.0000001",
+    "evsm2, evsm4 (also as cascades' moments): smallest variance in depth units squared, scaled by each warp's slope squared", 0, 0.01};
+inline constexpr ParamSpec kEsmParams[] = {kEsmCParam, kBlurParam};
 inline constexpr ParamSpec kVsmParams[] = {kBlurParam, kLightBleedParam, kMinVarianceParam};
 inline constexpr ParamSpec kEvsmParams[] = {
-    {"evsm_positive", "--evsm-positive", ParamKind::number, "40", "evsm2, evsm4: exponent of the positive warp",
-     0.1, 44.36, {}, "the second moment exp(2 c) overflows 32-bit float storage for c above 44.36"},
-    {"evsm_negative", "--evsm-negative", ParamKind::number, "5", "evsm4: exponent of the negative warp", 0.1, 44.36,
-     {}, "the second moment exp(2 c) overflows 32-bit float storage for c above 44.36"},
-    {"evsm_min_variance", "--evsm-min-variance", ParamKind::number, "0.0000001",
-     "evsm2, evsm4: smallest variance in depth units squared, scaled by each warp's slope squared", 0, 0.01},
+    kEvsmPositiveParam, kEvsmNegativeParam, kEvsmMinVarianceParam, kBlurParam, kLightBleedParam,
+};
+inline constexpr ParamSpec kCascadeParams[] = {
+    {"cascades", "--cascades", ParamKind::integer, "4", "cascades: number of slices of the view frustum", 1, 4},
+    {"split_lambda", "--split-lambda", ParamKind::number, "0.75",
+     "cascades: practical split scheme, 1 logarithmic, 0 uniform", 0, 1},
+    {"stabilize", "--stabilize", ParamKind::flag, "false",
+     "cascades: texel-snapped maps around each slice's bounding sphere (no shimmer, less resolution)"},
+    {"cascade_blend", "--cascade-blend", ParamKind::number, "0",
+     "cascades: fraction of a slice, at its far end, blended into the next slice's map", 0, 0.5},
+    {"cascade_warp", "--cascade-warp", ParamKind::choice, "none",
+     "cascades: each slice's map orthographic, or warped by LiSPSM", 0, 0, {"none", "lispsm"}},
+    {"moments", "--moments", ParamKind::choice, "none",
+     "cascades: each slice's map compared with the filter (none), or turned into blurred filterable moments as "
+     "the esm, vsm, evsm2 and evsm4 techniques, with their parameters", 0, 0,
+     {"none", "esm", "vsm", "evsm2", "evsm4"}},
+    kMapLayoutParam,
+    kViewRangeParam,
+    kEsmCParam,
     kBlurParam,
     kLightBleedParam,
+    kMinVarianceParam,
+    kEvsmPositiveParam,
+    kEvsmNegativeParam,
+    kEvsmMinVarianceParam,
 };
 inline constexpr ParamSpec kPcssParams[] = {
     {"light_angle", "--light-angle", ParamKind::number, "1",
