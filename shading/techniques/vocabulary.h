@@ -65,6 +65,7 @@ struct FilterParams {
   float spread = 1.0f / 700.0f;      // disc radius in shadow-map texture coordinates
   bool pcf_taps = false;             // each Poisson tap is a hardware 2×2 PCF lookup instead of one compare
   bool stratify_world = false;       // stratified: hash world position rounded to 1 mm instead of the pixel
+  bool tutorial = false;             // the tutorial's arithmetic: 1 - 0.2 per shadowed tap, its GLSL random
   bool operator==(const FilterParams&) const = default;
 };
 
@@ -97,6 +98,10 @@ inline constexpr ParamSpec kFilterParams[] = {
     {"pcf_taps", "--pcf-taps", ParamKind::flag, "false", "Poisson filters: each tap is a hardware 2x2 PCF lookup"},
     {"stratify", "--stratify", ParamKind::choice, "pixel",
      "stratified filter seed: the pixel, or the world position rounded to 1 mm", 0, 0, {"pixel", "world"}},
+    {"poisson_variant", "--poisson-variant", ParamKind::choice, "shadowlab",
+     "poisson, stratified, rotated: the taps averaged with an integer hash (shadowlab), or the tutorial's "
+     "1 - 0.2 per shadowed tap with its GLSL random (tutorial)",
+     0, 0, {"shadowlab", "tutorial"}},
 };
 inline constexpr ParamSpec kClassicParams[] = {
     {"fit", "--fit", ParamKind::choice, "auto",
