@@ -5,6 +5,7 @@
 // EXR. The camera pass then draws receivers through draw_receiver (projective_shaders.h).
 #pragma once
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -28,9 +29,11 @@ struct ProjectiveStats {
   std::vector<uint32_t> receiver_draws;    // per scene instance: draw calls of the camera pass
 };
 
-// State that lives across frames of one scene sequence: the projective maps and their keys.
+// State that lives across frames of one scene sequence: the projective maps and their keys, and per light the
+// box a fit that smooths over time (fit = tutorial) chose in the previous frame.
 struct FrameCache {
   shading::tech::ProjectiveCache projective;
+  std::map<size_t, shading::tech::FitMemory> fits;  // by light index
 };
 
 // One caster's map as the camera pass applies it.

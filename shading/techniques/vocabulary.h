@@ -105,7 +105,15 @@ inline constexpr ParamSpec kFilterParams[] = {
 };
 inline constexpr ParamSpec kClassicParams[] = {
     {"fit", "--fit", ParamKind::choice, "auto",
-     "directional light box: fitted to receivers and casters, or the tutorial's fixed box", 0, 0, {"auto", "fixed"}},
+     "directional light box: the view frustum's part of the scene box (auto), the tutorial's fixed box (fixed), "
+     "or the tutorial's potential receivers and casters, object by object (tutorial)",
+     0, 0, {"auto", "fixed", "tutorial"}},
+    {"fit_cutoff", "--fit-cutoff", ParamKind::number, "0",
+     "fit = tutorial: receivers whose nearest point is farther than this from the camera (metres, along its view) "
+     "are dropped; 0: the camera's far plane", 0, 1e6},
+    {"fit_smoothing", "--fit-smoothing", ParamKind::number, "0.75",
+     "fit = tutorial, across the frames of one run (--frames, --animate): the box grows at once and shrinks by "
+     "1 - fit_smoothing of the difference per frame (0: no smoothing)", 0, 0.99},
 };
 inline constexpr ParamSpec kCubeParams[] = {
     {"seamless", "--seamless", ParamKind::flag, "true", "cube: filter across face edges (GL_TEXTURE_CUBE_MAP_SEAMLESS)"},
