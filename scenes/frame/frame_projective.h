@@ -25,6 +25,7 @@ namespace frame {
 struct ProjectiveStats {
   bool active = false;                     // some light uses the projective technique
   size_t maps_rebuilt = 0, maps_reused = 0;
+  size_t maps_skipped = 0;                 // casters whose shadow cannot reach the view (caster_reach)
   size_t shadow_passes = 0;                // multiply passes drawn (multipass, or single-pass overflow)
   std::vector<uint32_t> receiver_draws;    // per scene instance: draw calls of the camera pass
 };

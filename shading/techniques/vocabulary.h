@@ -139,6 +139,9 @@ inline constexpr ParamSpec kProjectiveParams[] = {
      0, 1e6},
     {"decimate", "--decimate", ParamKind::flag, "true",
      "projective: draw each mask from the caster clustered to half a map texel (same silhouette, fewer triangles)"},
+    {"caster_reach", "--caster-reach", ParamKind::number, "0",
+     "projective: maps only for casters near the view frustum: whose shadow volume, cut this far (metres) beyond "
+     "the caster, reaches it (0: every caster)", 0, 1e6},
 };
 
 // Shared by the view-following techniques (cascades, lispsm, frustum-faces).
