@@ -312,7 +312,9 @@ nlohmann::json frame_json(int number, double total_ms, const frame::Frame& f, co
                       {"aliasing", aliasing},
                       {"outputs", nlohmann::json::array()}};
   if (s.projective.active)
-    j["projective"] = {{"maps_rebuilt", s.projective.maps_rebuilt}, {"maps_reused", s.projective.maps_reused}};
+    j["projective"] = {{"maps_rebuilt", s.projective.maps_rebuilt},
+                       {"maps_reused", s.projective.maps_reused},
+                       {"maps_skipped", s.projective.maps_skipped}};
   return j;
 }
 
@@ -382,8 +384,8 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
           (unsigned long long)s.draws.setups, (unsigned long long)s.draws.clipped,
           (unsigned long long)s.draws.culled, (unsigned long long)s.draws.rejected);
       if (s.projective.active)
-        std::printf("frame %d: maps rebuilt %zu, reused %zu\n", i + 1, s.projective.maps_rebuilt,
-                    s.projective.maps_reused);
+        std::printf("frame %d: maps rebuilt %zu, reused %zu, skipped %zu\n", i + 1, s.projective.maps_rebuilt,
+                    s.projective.maps_reused, s.projective.maps_skipped);
     }
     frames.push_back(frame_json(i + 1, total, *result, config));
     // An image sequence writes every frame; otherwise the last frame is the one written.

@@ -163,7 +163,17 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
           if (!visible) visible = visible_samples(scene, view_proj, cam, config.width, config.height, renderer);
           return *visible;
         };
+        // Instance boxes only for a light whose fit works object by object (each costs a pass over its mesh).
+        const bool per_object = std::any_of(resolved.begin(), resolved.end(), [](const ResolvedLight& l) {
+          const auto fit = l.config.params.find("fit");
+          return fit != l.config.params.end() && fit->second == tech::ParamValue(std::string("tutorial"));
+        });
+        if (per_object) inputs->objects.reserve(scene.instances.size());
+        for (size_t k = 0; per_object && k < scene.instances.size(); ++k)
+          inputs->objects.push_back({to_box(scenes::instance_bounds(scene, k)), scene.instances[k].casts_shadows,
+                                     scene.instances[k].receives_shadows});
       }
+      inputs->fit_memory = cache ? &cache->fits[i] : nullptr;
       if (!casters) casters = scenes::flatten(scene, scenes::InstanceFilter::casters);
       try {
         lr.shadow = impl->plan(r.desc, r.config, *inputs);

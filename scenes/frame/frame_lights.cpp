@@ -96,6 +96,15 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
       const tech::Params p(c);
       c.filter_params.pcf_taps = p.flag("pcf_taps");
       c.filter_params.stratify_world = p.text("stratify") == "world";
+      c.filter_params.tutorial = p.text("poisson_variant") == "tutorial";
+      const bool poisson = c.filter == tech::FilterKind::poisson || c.filter == tech::FilterKind::stratified ||
+                           c.filter == tech::FilterKind::rotated;
+      // Named as the command line's field when it gave the variant (the CLI shows its option), else the light's.
+      if (c.filter_params.tutorial && !poisson)
+        throw tech::TechniqueError((o.params.count("poisson_variant") ? "params.poisson_variant"
+                                                                      : p.where("poisson_variant")) +
+                                   ": tutorial is a variant of the poisson, stratified and rotated filters, not " +
+                                   std::string(tech::to_string(c.filter)));
     } catch (const tech::TechniqueError& e) {
       throw FrameError(e.what());
     }

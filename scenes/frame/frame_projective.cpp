@@ -15,6 +15,7 @@
 
 #include "scenes/scene_queries.h"
 #include "scenes/frame/frame.h"
+#include "shading/techniques/tutorial_fit.h"
 
 namespace frame {
 
@@ -38,6 +39,28 @@ tech::Box instance_box(const scenes::Aabb& mesh_box, const glm::mat4& m) {
     b.min = glm::min(b.min, w), b.max = glm::max(b.max, w);
   }
   return b;
+}
+
+// The box of a caster's shadow volume cut `reach` beyond the caster: its box swept along a directional light,
+// or its corners pushed `reach` away from a point or spot light. Nullopt when the light is inside the box
+// (every direction is shadowed: the volume has no bound worth testing).
+std::optional<tech::Box> shadow_volume_box(const tech::ProjectiveLight& light, const tech::Box& caster, float reach) {
+  tech::Box v = caster;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 p{(i & 1) ? caster.max.x : caster.min.x, (i & 2) ? caster.max.y : caster.min.y,
+                      (i & 4) ? caster.max.z : caster.min.z};
+    glm::vec3 q;
+    if (light.directional) {
+      q = p + light.direction * reach;
+    } else {
+      if (glm::all(glm::greaterThanEqual(light.position, caster.min)) &&
+          glm::all(glm::lessThanEqual(light.position, caster.max)))
+        return std::nullopt;
+      q = p + glm::normalize(p - light.position) * reach;
+    }
+    v.min = glm::min(v.min, q), v.max = glm::max(v.max, q);
+  }
+  return v;
 }
 
 tech::ProjectiveLight projector_of(const scenes::Light& l) {
@@ -64,6 +87,7 @@ tech::ProjectiveSettings resolve_projective(const tech::ShadowConfig& c) {
       throw tech::TechniqueError(params.where("fade_end") + ": must be greater than fade_start");
     p.max_textures = int(params.number("max_textures"));
     p.decimate = params.flag("decimate");
+    p.caster_reach = float(params.number("caster_reach"));
   } catch (const tech::TechniqueError& e) {
     throw FrameError(e.what());
   }
@@ -160,6 +184,20 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const P
                         hash_of(inst.mesh)});
       }
       const uint64_t id = (uint64_t(li) << 32) | obj;
+      // The article's "near the view frustum": the caster's shadow volume, cut at caster_reach, meets it.
+      if (s.caster_reach > 0.0f) {
+        tech::Box box;
+        for (uint32_t i : members) {
+          const tech::Box b = instance_box(box_of(scene.instances[i].mesh), scene.instances[i].transform);
+          box.min = glm::min(box.min, b.min), box.max = glm::max(box.max, b.max);
+        }
+        const std::optional<tech::Box> volume = shadow_volume_box(projector, box, s.caster_reach);
+        if (volume && !tech::box_in_frustum(view.view_proj, *volume)) {
+          cache.keep(id);
+          ++pf.stats.maps_skipped;
+          continue;
+        }
+      }
       auto map = cache.get(id, tech::make_caster_key(projector, s, keys), [&] {
         // Rebuilding: the caster's exact world bounds and world-space parts, one per instance.
         std::vector<tech::CasterPart> parts;

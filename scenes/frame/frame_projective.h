@@ -5,6 +5,7 @@
 // EXR. The camera pass then draws receivers through draw_receiver (projective_shaders.h).
 #pragma once
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -24,13 +25,16 @@ namespace frame {
 struct ProjectiveStats {
   bool active = false;                     // some light uses the projective technique
   size_t maps_rebuilt = 0, maps_reused = 0;
+  size_t maps_skipped = 0;                 // casters whose shadow cannot reach the view (caster_reach)
   size_t shadow_passes = 0;                // multiply passes drawn (multipass, or single-pass overflow)
   std::vector<uint32_t> receiver_draws;    // per scene instance: draw calls of the camera pass
 };
 
-// State that lives across frames of one scene sequence: the projective maps and their keys.
+// State that lives across frames of one scene sequence: the projective maps and their keys, and per light the
+// box a fit that smooths over time (fit = tutorial) chose in the previous frame.
 struct FrameCache {
   shading::tech::ProjectiveCache projective;
+  std::map<size_t, shading::tech::FitMemory> fits;  // by light index
 };
 
 // One caster's map as the camera pass applies it.

@@ -1,6 +1,10 @@
 // The classic technique's planning and reader setup (see classic.h).
 #include "shading/techniques/classic.h"
 
+#include <string>
+
+#include "shading/techniques/tutorial_fit.h"
+
 namespace shading::tech {
 
 ShadowMapSet plan_classic_map(const ClassicLight& light, const ClassicSettings& s, const ClassicFit& fit) {
@@ -101,6 +105,26 @@ bool one_pass_texels(const ShadowMapSet& set, const glm::mat4& shadow, glm::vec3
   return true;
 }
 
+LightMatrices tutorial_fit(glm::vec3 direction, const Params& p, const PlanInputs& in) {
+  TutorialFitInput t;
+  t.direction = direction;
+  t.camera_view_proj = in.camera_view_proj;
+  t.eye = in.camera.eye;
+  t.forward = in.camera.forward;
+  const float cutoff = float(p.number("fit_cutoff"));
+  t.cutoff = cutoff > 0.0f ? cutoff : in.camera.far;
+  t.scene = in.scene_receivers;
+  t.scene.min = glm::min(t.scene.min, in.casters.min);
+  t.scene.max = glm::max(t.scene.max, in.casters.max);
+  const TutorialSets sets = tutorial_sets(in.objects, t);
+  LightBox box = tutorial_light_box(in.objects, sets, t);
+  if (in.fit_memory) {
+    box = smooth_light_box(box, in.fit_memory->box, float(p.number("fit_smoothing")));
+    in.fit_memory->box = box;
+  }
+  return light_box_matrices(box);
+}
+
 MapRecord one_pass_record(const ShadowMapSet& set, Technique technique) {
   const ShadowPass& p = set.passes.at(0);
   MapRecord m;
@@ -116,8 +140,13 @@ std::unique_ptr<LightShadow> plan_classic(const LightDesc& light, const ShadowCo
   const ClassicLight l = classic_light(light);
   const ClassicSettings s = classic_settings(c);
   ClassicFit fit{in.receivers, in.casters, std::nullopt};
-  if (Params(c).text("fit") == "fixed")
-    fit.fixed = fixed_directional(l.direction, glm::vec3(0.0f), {10.0f, 10.0f}, -10.0f, 20.0f);
+  const Params p(c);
+  const std::string how = p.text("fit");
+  for (const char* key : {"fit_cutoff", "fit_smoothing"})
+    if (how != "tutorial" && c.params.count(key))
+      throw TechniqueError(p.where(key) + ": applies to fit = tutorial only (fit is " + how + ")");
+  if (how == "fixed") fit.fixed = fixed_directional(l.direction, glm::vec3(0.0f), {10.0f, 10.0f}, -10.0f, 20.0f);
+  if (how == "tutorial" && l.kind == LightKind::directional) fit.fixed = tutorial_fit(l.direction, p, in);
   return std::make_unique<ClassicShadow>(l, s, fit);
 }
 

@@ -45,7 +45,8 @@ struct ClassicLight {
   float range = 50.0f;                     // spot: far plane
 };
 
-// What a directional light's box is fitted to; `fixed` replaces the fit with a hand-made box.
+// What a directional light's box is fitted to; `fixed` replaces the fit with given matrices (the tutorial's
+// hand-made box, or its automatic frustum).
 struct ClassicFit {
   Box receivers;  // e.g. camera_receiver_box(camera view-proj, scene bounds)
   Box casters;    // bounds of every shadow caster
@@ -154,8 +155,13 @@ inline void classic_visibility_x8(const ClassicReader& r, std::span<const Shadow
   for (int l = 0; l < b.count; ++l) vis[point_of[size_t(l)]] = out[l];
 }
 
-// The registry's factory (technique.h): a directional light's box is fitted to in.receivers and in.casters, or
-// is the tutorial's fixed box around the origin with the parameter fit = fixed.
+// The tutorial's automatic light frustum (tutorial_fit.h) over in.objects, with the parameters fit_cutoff and
+// fit_smoothing (the latter through in.fit_memory, across the frames of a sequence).
+LightMatrices tutorial_fit(glm::vec3 direction, const Params& p, const PlanInputs& in);
+
+// The registry's factory (technique.h): a directional light's box is fitted to in.receivers and in.casters
+// (fit = auto), is the tutorial's fixed box around the origin (fit = fixed), or is the tutorial's automatic
+// light frustum (fit = tutorial).
 std::unique_ptr<LightShadow> plan_classic(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
 
 }  // namespace shading::tech

@@ -4,6 +4,7 @@
 // lights get a perspective frustum around their cone.
 #pragma once
 #include <limits>
+#include <optional>
 #include <span>
 
 #include <glm/mat4x4.hpp>
@@ -16,6 +17,23 @@ struct Box {
   glm::vec3 min{std::numeric_limits<float>::infinity()};
   glm::vec3 max{-std::numeric_limits<float>::infinity()};
   bool empty() const { return !(min.x <= max.x && min.y <= max.y && min.z <= max.z); }
+};
+
+// One scene object (an instance) as the tutorial's automatic frustum sees it: its world box and whether it casts
+// and receives shadows.
+struct ObjectBounds {
+  Box box;
+  bool caster = true, receiver = true;
+};
+
+// A directional light's box in the light's rotated frame (light_rotation: x, y across the light, z towards it):
+// what a fit that smooths over time keeps from one frame to the next.
+struct LightBox {
+  glm::vec3 direction{0.0f};  // the light direction it was fitted for
+  glm::vec3 lo{0.0f}, hi{0.0f};
+};
+struct FitMemory {
+  std::optional<LightBox> box;  // the previous frame's box, if any
 };
 
 struct LightMatrices {

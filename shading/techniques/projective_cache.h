@@ -52,6 +52,11 @@ class ProjectiveCache {
     ++rebuilt_;
     return e.map;
   }
+  // Keeps the map of caster `id` (if any) through end_frame without asking for it: a caster skipped this frame
+  // keeps its map for when it is needed again (its key is still checked then).
+  void keep(uint64_t id) {
+    if (auto it = entries_.find(id); it != entries_.end()) it->second.used = true;
+  }
   // Ends a frame: entries not asked for this frame are dropped.
   void end_frame();
 

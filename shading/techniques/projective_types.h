@@ -30,6 +30,7 @@ struct ProjectiveSettings {
   float fade_start = 0.0f;     // distance behind the caster's near side where the shadow starts to fade ...
   float fade_end = 0.0f;       // ... and where it is gone; fade_end <= fade_start: no fade
   bool decimate = true;        // draw the caster's map from a mesh clustered to the map's resolution
+  float caster_reach = 0.0f;   // > 0: maps only for casters whose shadow volume, cut this far, meets the view
   ProjectiveMode mode = ProjectiveMode::multipass;
   int max_textures = 4;        // single-pass: shadow textures combined in one draw (more: extra passes)
   bool operator==(const ProjectiveSettings&) const = default;

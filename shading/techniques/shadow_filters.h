@@ -11,6 +11,7 @@
 
 #include "shading/shadow_lookup.h"
 #include "shading/techniques/poisson.h"
+#include "shading/techniques/tutorial_random.h"
 #include "shading/techniques/vocabulary.h"
 
 namespace shading::tech {
@@ -73,35 +74,64 @@ struct PcfFilter {
 
 enum class PoissonMode : uint8_t { fixed, stratified, rotated };
 
-// The seed of stratified and rotated sampling at a point: its pixel, or its world position rounded to 1 mm.
-inline uint32_t poisson_seed(const SampleContext& c, const FilterParams& p) {
-  return p.stratify_world ? world_seed(c.world) : pixel_seed(c.frag);
-}
-
-// The disc point of tap i, before the spread: stratified picks a hashed index, rotated turns the disc by rot.
+// Where one point's taps lie: its seed and the disc rotation, from shadowlab's integer hash (pixel, or world
+// position rounded to 1 mm) or, with FilterParams::tutorial, from the tutorial's GLSL random (tutorial_random.h)
+// over gl_FragCoord.xyy or the world position floored to the millimetre.
 template <PoissonMode kMode>
-glm::vec2 poisson_offset(uint32_t seed, glm::vec2 rot, int i) {
-  glm::vec2 d;
-  if constexpr (kMode == PoissonMode::stratified) d = kPoissonDisk[size_t(stratified_index(seed, i))];
-  else d = kPoissonDisk[size_t(i)];
-  if constexpr (kMode == PoissonMode::rotated) d = glm::vec2(rot.x * d.x - rot.y * d.y, rot.y * d.x + rot.x * d.y);
-  return d;
-}
+struct PoissonTaps {
+  bool tutorial = false;
+  uint32_t seed = 0;      // shadowlab's hash
+  glm::vec3 seed3{0.0f};  // the tutorial's seed
+  glm::vec2 rot{1.0f, 0.0f};
+
+  PoissonTaps() = default;
+  PoissonTaps(const SampleContext& c, const FilterParams& p) : tutorial(p.tutorial) {
+    if constexpr (kMode == PoissonMode::fixed) return;
+    if (tutorial) {
+      seed3 = p.stratify_world ? tutorial_world_seed(c.world) : tutorial_pixel_seed(c.frag);
+      if constexpr (kMode == PoissonMode::rotated) rot = tutorial_rotation(seed3);
+    } else {
+      seed = p.stratify_world ? world_seed(c.world) : pixel_seed(c.frag);
+      if constexpr (kMode == PoissonMode::rotated) rot = rotation_of(seed);
+    }
+  }
+
+  // The disc point of tap i, before the spread: stratified picks an index per point and tap, rotated turns the
+  // disc.
+  glm::vec2 disc(int i) const {
+    glm::vec2 d;
+    if constexpr (kMode == PoissonMode::stratified)
+      d = kPoissonDisk[size_t(tutorial ? tutorial_index(seed3, i) : stratified_index(seed, i))];
+    else d = kPoissonDisk[size_t(i)];
+    if constexpr (kMode == PoissonMode::rotated) d = glm::vec2(rot.x * d.x - rot.y * d.y, rot.y * d.x + rot.x * d.y);
+    return d;
+  }
+};
+
+// The tutorial's accumulation, one tap: visibility -= 0.2 * (1.0 - tap), starting from 1.0. Four shadowed
+// taps leave 0.2; sixteen would leave -2.2, so the result is clamped at 0 (tutorial_visibility) as a UNORM
+// colour write clamps it: with 16 taps, five or more shadowed taps read as full shadow.
+inline constexpr float kTutorialTapWeight = 0.2f;
+inline float tutorial_step(float visibility, float tap) { return visibility - kTutorialTapWeight * (1.0f - tap); }
+inline float tutorial_visibility(float visibility) { return visibility > 0.0f ? visibility : 0.0f; }
 
 // Poisson disc of `taps` points (4 or 16) scaled by `spread`: fixed (banding), stratified (each tap's disc index
-// hashed per pixel or world point), rotated (the disc turned per pixel). Visibility = mean of the taps.
+// picked per pixel or world point), rotated (the disc turned per pixel). Visibility = mean of the taps, or with
+// FilterParams::tutorial the tutorial's 1 - 0.2 per shadowed tap, clamped at 0.
 template <PoissonMode kModeArg>
 struct PoissonFilter {
   static constexpr PoissonMode kMode = kModeArg;
   template <class T>
   float operator()(const T& taps, const SampleContext& c, const FilterParams& p) const {
     const int n = p.taps >= 16 ? 16 : 4;
-    uint32_t seed = 0;
-    if constexpr (kMode != PoissonMode::fixed) seed = poisson_seed(c, p);
-    glm::vec2 rot(1.0f, 0.0f);
-    if constexpr (kMode == PoissonMode::rotated) rot = rotation_of(seed);
+    const PoissonTaps<kMode> at(c, p);
+    if (p.tutorial) {
+      float visibility = 1.0f;
+      for (int i = 0; i < n; ++i) visibility = tutorial_step(visibility, taps(c, at.disc(i) * p.spread));
+      return tutorial_visibility(visibility);
+    }
     float sum = 0.0f;
-    for (int i = 0; i < n; ++i) sum += taps(c, poisson_offset<kMode>(seed, rot, i) * p.spread);
+    for (int i = 0; i < n; ++i) sum += taps(c, at.disc(i) * p.spread);
     return sum / float(n);
   }
 };

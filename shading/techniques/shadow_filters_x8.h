@@ -46,27 +46,30 @@ VecF32 tap(const K& k, const SampleLanes& b, glm::vec2 off) {
 
 template <PoissonMode kMode, class K>
 VecF32 poisson(const K& k, const SampleLanes& b, const FilterParams& p, int n) {
-  std::array<uint32_t, 8> seed{};
-  std::array<glm::vec2, 8> rot;
-  rot.fill(glm::vec2(1.0f, 0.0f));
+  std::array<PoissonTaps<kMode>, 8> at;
   if constexpr (kMode != PoissonMode::fixed)
-    for (size_t l = 0; l < 8; ++l) {
-      seed[l] = poisson_seed(b.ctx[l], p);
-      if constexpr (kMode == PoissonMode::rotated) rot[l] = rotation_of(seed[l]);
-    }
-  VecF32 sum = VecF32::splat(0.0f);
-  for (int i = 0; i < n; ++i) {
+    for (size_t l = 0; l < 8; ++l) at[l] = PoissonTaps<kMode>(b.ctx[l], p);
+  // Tap i on every lane: one offset for all (fixed), or each lane's own.
+  const auto tap_i = [&](int i) {
     if constexpr (kMode == PoissonMode::fixed) {
-      sum = sum + tap(k, b, poisson_offset<kMode>(0u, rot[0], i) * p.spread);
+      return tap(k, b, at[0].disc(i) * p.spread);
     } else {
       alignas(32) float ox[8], oy[8];
       for (size_t l = 0; l < 8; ++l) {
-        const glm::vec2 off = poisson_offset<kMode>(seed[l], rot[l], i) * p.spread;
+        const glm::vec2 off = at[l].disc(i) * p.spread;
         ox[l] = off.x, oy[l] = off.y;
       }
-      sum = sum + tap(k, b, VecF32::load(ox), VecF32::load(oy));
+      return tap(k, b, VecF32::load(ox), VecF32::load(oy));
     }
+  };
+  if (p.tutorial) {  // tutorial_step and tutorial_visibility per lane
+    const VecF32 one = VecF32::splat(1.0f), weight = VecF32::splat(kTutorialTapWeight);
+    VecF32 visibility = one;
+    for (int i = 0; i < n; ++i) visibility = visibility - weight * (one - tap_i(i));
+    return raster::simd::max(visibility, VecF32::splat(0.0f));
   }
+  VecF32 sum = VecF32::splat(0.0f);
+  for (int i = 0; i < n; ++i) sum = sum + tap_i(i);
   return raster::simd::div(sum, VecF32::splat(float(n)));
 }
 }  // namespace lanes_detail

@@ -100,6 +100,11 @@ struct PlanInputs {
   // The camera's visible samples, computed on first call (a camera depth pre-pass) and kept for the frame;
   // null where the caller has none to offer.
   std::function<const VisibleSamples&()> visible;
+  // Every scene instance's world box and flags (the tutorial's automatic frustum works object by object).
+  std::vector<ObjectBounds> objects;
+  // The light's fitted box of the previous frame of a sequence, read and updated by fits that smooth over
+  // time (fit = tutorial); null for a single frame.
+  FitMemory* fit_memory = nullptr;
 };
 
 // World-space caster triangles, drawn into every pass.

@@ -65,6 +65,7 @@ struct FilterParams {
   float spread = 1.0f / 700.0f;      // disc radius in shadow-map texture coordinates
   bool pcf_taps = false;             // each Poisson tap is a hardware 2×2 PCF lookup instead of one compare
   bool stratify_world = false;       // stratified: hash world position rounded to 1 mm instead of the pixel
+  bool tutorial = false;             // the tutorial's arithmetic: 1 - 0.2 per shadowed tap, its GLSL random
   bool operator==(const FilterParams&) const = default;
 };
 
@@ -97,10 +98,22 @@ inline constexpr ParamSpec kFilterParams[] = {
     {"pcf_taps", "--pcf-taps", ParamKind::flag, "false", "Poisson filters: each tap is a hardware 2x2 PCF lookup"},
     {"stratify", "--stratify", ParamKind::choice, "pixel",
      "stratified filter seed: the pixel, or the world position rounded to 1 mm", 0, 0, {"pixel", "world"}},
+    {"poisson_variant", "--poisson-variant", ParamKind::choice, "shadowlab",
+     "poisson, stratified, rotated: the taps averaged with an integer hash (shadowlab), or the tutorial's "
+     "1 - 0.2 per shadowed tap with its GLSL random (tutorial)",
+     0, 0, {"shadowlab", "tutorial"}},
 };
 inline constexpr ParamSpec kClassicParams[] = {
     {"fit", "--fit", ParamKind::choice, "auto",
-     "directional light box: fitted to receivers and casters, or the tutorial's fixed box", 0, 0, {"auto", "fixed"}},
+     "directional light box: the view frustum's part of the scene box (auto), the tutorial's fixed box (fixed), "
+     "or the tutorial's potential receivers and casters, object by object (tutorial)",
+     0, 0, {"auto", "fixed", "tutorial"}},
+    {"fit_cutoff", "--fit-cutoff", ParamKind::number, "0",
+     "fit = tutorial: receivers whose nearest point is farther than this from the camera (metres, along its view) "
+     "are dropped; 0: the camera's far plane", 0, 1e6},
+    {"fit_smoothing", "--fit-smoothing", ParamKind::number, "0.75",
+     "fit = tutorial, across the frames of one run (--frames, --animate): the box grows at once and shrinks by "
+     "1 - fit_smoothing of the difference per frame (0: no smoothing)", 0, 0.99},
 };
 inline constexpr ParamSpec kCubeParams[] = {
     {"seamless", "--seamless", ParamKind::flag, "true", "cube: filter across face edges (GL_TEXTURE_CUBE_MAP_SEAMLESS)"},
@@ -126,6 +139,9 @@ inline constexpr ParamSpec kProjectiveParams[] = {
      0, 1e6},
     {"decimate", "--decimate", ParamKind::flag, "true",
      "projective: draw each mask from the caster clustered to half a map texel (same silhouette, fewer triangles)"},
+    {"caster_reach", "--caster-reach", ParamKind::number, "0",
+     "projective: maps only for casters near the view frustum: whose shadow volume, cut this far (metres) beyond "
+     "the caster, reaches it (0: every caster)", 0, 1e6},
 };
 
 // Shared by the view-following techniques (cascades, lispsm, frustum-faces).

@@ -21,10 +21,10 @@ namespace fs = std::filesystem;
 using testsupport::Outcome;
 using testsupport::shadowlab;
 
-// The `frame K: maps rebuilt R, reused U` lines of stdout, in order.
+// The `frame K: maps rebuilt R, reused U, skipped S` lines of stdout, in order.
 std::vector<std::string> cache_lines(const std::string& out) {
   std::vector<std::string> lines;
-  const std::regex line("^frame [0-9]+: maps rebuilt [0-9]+, reused [0-9]+$");
+  const std::regex line("^frame [0-9]+: maps rebuilt [0-9]+, reused [0-9]+, skipped [0-9]+$");
   std::istringstream in(out);
   for (std::string l; std::getline(in, l);)
     if (std::regex_match(l, line)) lines.push_back(l);
@@ -46,9 +46,9 @@ class ProjectiveCli : public ::testing::Test {
 TEST_F(ProjectiveCli, StillFramesReuseEveryMap) {
   const Outcome r = shadowlab(dir, "render projective --size 96x54 --threads 0 --frames 3 --stats --out f.png");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(cache_lines(r.out), (std::vector<std::string>{"frame 1: maps rebuilt 5, reused 0",
-                                                          "frame 2: maps rebuilt 0, reused 5",
-                                                          "frame 3: maps rebuilt 0, reused 5"}))
+  EXPECT_EQ(cache_lines(r.out), (std::vector<std::string>{"frame 1: maps rebuilt 5, reused 0, skipped 0",
+                                                          "frame 2: maps rebuilt 0, reused 5, skipped 0",
+                                                          "frame 3: maps rebuilt 0, reused 5, skipped 0"}))
       << r.out;
   EXPECT_TRUE(fs::exists(dir / "f.png"));
 }
@@ -57,9 +57,9 @@ TEST_F(ProjectiveCli, AnimatedFramesRebuildTheWalkers) {
   const Outcome r = shadowlab(dir, "render projective --size 96x54 --threads 0 --frames 3 --animate --fps 24 "
                                    "--stats --projective-mode single-pass --out f.png --maps maps");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(cache_lines(r.out), (std::vector<std::string>{"frame 1: maps rebuilt 5, reused 0",
-                                                          "frame 2: maps rebuilt 5, reused 0",
-                                                          "frame 3: maps rebuilt 5, reused 0"}))
+  EXPECT_EQ(cache_lines(r.out), (std::vector<std::string>{"frame 1: maps rebuilt 5, reused 0, skipped 0",
+                                                          "frame 2: maps rebuilt 5, reused 0, skipped 0",
+                                                          "frame 3: maps rebuilt 5, reused 0, skipped 0"}))
       << r.out;
   size_t maps = 0;
   for (const auto& e : fs::directory_iterator(dir / "maps")) {

@@ -25,6 +25,7 @@ struct Read {
   int taps;
   bool pcf_taps;
   const char* stratify = "pixel";
+  const char* variant = "shadowlab";
 };
 
 const Read kReads[] = {
@@ -40,6 +41,10 @@ const Read kReads[] = {
     {"rotated4_pcf", "rotated", 4, true},
     {"early_bail", "early-bail", 16, false},
     {"early_bail_pcf", "early-bail", 16, true},
+    {"poisson16_tutorial", "poisson", 16, false, "pixel", "tutorial"},
+    {"stratified_tutorial", "stratified", 4, false, "pixel", "tutorial"},
+    {"stratified16_pcf_world_tutorial", "stratified", 16, true, "world", "tutorial"},
+    {"rotated_tutorial", "rotated", 16, true, "pixel", "tutorial"},
 };
 
 // Pixels (RGBA8 bytes) where two frames differ.
@@ -68,6 +73,7 @@ void expect_paths_agree(const char* scene_name, raster::DepthFormat format, int 
     o.poisson_taps = r.taps;
     o.params["pcf_taps"] = bool(r.pcf_taps);
     o.params["stratify"] = std::string(r.stratify);
+    o.params["poisson_variant"] = std::string(r.variant);
     o.map_size = map_size;
     const frame::Frame wide = frame::render_frame(scene, o, renderer);
     o.quad_fragments = true;

@@ -95,6 +95,24 @@ TEST(FrameLights, BadOverridesNameTheField) {
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.offset_units = INFINITY; }).rfind("bias.offset_units: ", 0), 0u);
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.params["stratify"] = std::string("diagonal"); }).rfind("lights[0].shadow.params.stratify: ", 0), 0u);
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.offset_factor = -3.0f; }), "no error");  // signed is fine
+  // The tutorial's arithmetic is a variant of the Poisson filters only (the tutorial's sun reads with pcf); an
+  // override is named as the command line's field, which the CLI shows as its option.
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.params["poisson_variant"] = std::string("tutorial"); }),
+            "params.poisson_variant: tutorial is a variant of the poisson, stratified and rotated filters, not pcf");
+  EXPECT_EQ(message([](frame::FrameConfig& o) {
+              o.filter = shading::tech::FilterKind::stratified;
+              o.params["poisson_variant"] = std::string("tutorial");
+            }),
+            "no error");
+}
+
+TEST(FrameLights, TutorialPoissonVariantReachesTheFilter) {
+  const scenes::Light sun = scenes::builtin_scene("tutorial").lights.at(0);
+  frame::FrameConfig o;
+  o.filter = shading::tech::FilterKind::rotated;
+  EXPECT_FALSE(frame::resolve_light(sun, 0, o).config.filter_params.tutorial);
+  o.params["poisson_variant"] = std::string("tutorial");
+  EXPECT_TRUE(frame::resolve_light(sun, 0, o).config.filter_params.tutorial);
 }
 
 // Issue 23: a bad value of the light's own (not overridden) was named as the override's field, which the CLI

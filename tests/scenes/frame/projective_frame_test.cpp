@@ -117,6 +117,46 @@ TEST(ProjectiveFrame, CacheRebuildsOnlyWhatMoved) {
   EXPECT_EQ(f5.stats.projective.maps_rebuilt, 5u);  // everyone walked
 }
 
+// The article's "maps only for casters near the view frustum" (caster_reach): with the camera turned away
+// (looking up at the sky) no map is built; a skipped caster keeps its cached map for when it is seen again; and
+// wherever the camera looks, the frame equals the one with every map built (a skipped shadow cannot be seen).
+TEST(ProjectiveFrame, CastersTheCameraCannotSeeGetNoMap) {
+  raster::Renderer r(testsupport::test_threads());
+  frame::FrameCache cache;
+  scenes::Scene scene = scenes::builtin_scene("projective");
+  frame::FrameConfig o = small();
+  o.params["caster_reach"] = 30.0;
+  const frame::Frame facing = frame::render_frame(scene, o, r, &cache);
+  EXPECT_EQ(facing.stats.projective.maps_rebuilt, 5u);
+  EXPECT_EQ(facing.stats.projective.maps_skipped, 0u);
+  scenes::Scene away = scene;
+  away.cameras.at(0).target = away.cameras.at(0).position + glm::vec3(0.0f, 40.0f, 14.0f);
+  const frame::Frame up = frame::render_frame(away, o, r, &cache);
+  EXPECT_EQ(up.stats.projective.maps_rebuilt, 0u);
+  EXPECT_EQ(up.stats.projective.maps_reused, 0u);
+  EXPECT_EQ(up.stats.projective.maps_skipped, 5u);
+  const frame::Frame back = frame::render_frame(scene, o, r, &cache);  // turned back: the kept maps serve
+  EXPECT_EQ(back.stats.projective.maps_rebuilt, 0u);
+  EXPECT_EQ(back.stats.projective.maps_reused, 5u);
+  EXPECT_EQ(testsupport::frame_hash(back.color), testsupport::frame_hash(facing.color));
+
+  frame::FrameConfig every = small();
+  size_t skipped = 0;
+  for (const glm::vec3 target : {glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(-12.0f, 0.0f, 4.0f),
+                                 glm::vec3(14.0f, 0.0f, -10.0f), glm::vec3(0.0f, 12.0f, 30.0f),
+                                 glm::vec3(20.0f, 3.0f, 16.0f)}) {
+    scenes::Scene s = scene;
+    s.cameras.at(0).target = target;
+    const frame::Frame near = frame::render_frame(s, o, r);
+    const frame::Frame all = frame::render_frame(s, every, r);
+    EXPECT_EQ(near.stats.projective.maps_rebuilt + near.stats.projective.maps_skipped, 5u);
+    EXPECT_EQ(testsupport::frame_hash(near.color), testsupport::frame_hash(all.color))
+        << target.x << " " << target.y << " " << target.z;
+    skipped += near.stats.projective.maps_skipped;
+  }
+  EXPECT_GT(skipped, 0u);
+}
+
 TEST(ProjectiveFrame, MultipassEqualsSinglePass) {
   raster::Renderer r(testsupport::test_threads());
   scenes::Scene scene = scenes::builtin_scene("projective", {2.0});

@@ -1,7 +1,8 @@
 // The eight-lane read of a classic map (classic_visibility_x8, the filters of shadow_filters_x8.h) equals the
 // scalar classic_visibility point by point, bit for bit: every filter with single-compare and PCF taps, d16,
 // d24 and d32f maps with border and edge wrap, directional and spot readers (points behind the light and off
-// the map included), each bias kind, batches of one to eight points.
+// the map included), each bias kind, batches of one to eight points, shadowlab's and the tutorial's Poisson
+// arithmetic.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -85,8 +86,13 @@ TEST(ClassicX8, EqualsScalarClassicVisibilityPerPoint) {
         for (tech::BiasMode bias : {tech::BiasMode::none, tech::BiasMode::slope, tech::BiasMode::normal})
           for (tech::FilterKind kind : kinds)
             for (bool pcf_taps : {false, true})
-              for (int taps : {4, 16}) {
+              for (int taps : {4, 16})
+                for (bool tutorial : {false, true}) {
+                if (tutorial && (kind == tech::FilterKind::hard || kind == tech::FilterKind::pcf ||
+                                 kind == tech::FilterKind::early_bail))
+                  continue;  // the tutorial variant is one of the Poisson filters only
                 tech::ClassicReader r = reader(tex, wrap, spot, bias);
+                r.filter.tutorial = tutorial;
                 r.filter_kind = kind;
                 r.filter.pcf_taps = pcf_taps;
                 r.filter.taps = taps;
@@ -103,6 +109,7 @@ TEST(ClassicX8, EqualsScalarClassicVisibilityPerPoint) {
                     ASSERT_EQ(std::bit_cast<uint32_t>(wide[i]), std::bit_cast<uint32_t>(quad[i]))
                         << "format " << int(f) << " wrap " << int(wrap) << " spot " << spot << " bias "
                         << int(bias) << " filter " << int(kind) << " pcf " << pcf_taps << " taps " << taps
+                        << " tutorial " << tutorial
                         << " point " << k + i << " of a batch of " << m;
                     ++checked;
                     zero += quad[i] == 0.0f;
