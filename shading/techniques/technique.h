@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include "raster/renderer.h"
+#include "shading/techniques/caster_geometry.h"
 #include "shading/techniques/light_frustum.h"
 #include "shading/techniques/shadow_filters.h"
 #include "shading/techniques/vocabulary.h"
@@ -100,12 +101,6 @@ struct PlanInputs {
   // The camera's visible samples, computed on first call (a camera depth pre-pass) and kept for the frame;
   // null where the caller has none to offer.
   std::function<const VisibleSamples&()> visible;
-};
-
-// World-space caster triangles, drawn into every pass.
-struct CasterGeometry {
-  std::span<const glm::vec3> positions;
-  std::span<const uint32_t> indices;
 };
 
 // One pass of an exported map: its viewport in the image and its matrices.
