@@ -177,6 +177,7 @@ int run_eval(const EvalArgs& a) {
   const scenes::StageOptions stage;  // a bare glTF model gets its sun, ground and camera, as in render
   std::vector<std::string> notes;
   const scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
+  const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);  // once for the sweep
   print_notes(notes);
   raster::Renderer renderer(a.threads);
   frame::FrameConfig base;
@@ -189,7 +190,7 @@ int run_eval(const EvalArgs& a) {
   try {
     Progress progress;
     progress.update("reference: casting rays");
-    const reference::FrameReference ref = reference::reference_for(scene, base, renderer);
+    const reference::FrameReference ref = reference::reference_for(scene, base, renderer, -1.0f, &textures);
     const double rays_per_s = ref.exact.ms > 0 ? double(ref.exact.rays) / (ref.exact.ms / 1000.0) : 0.0;
     std::printf("reference: %zu triangles, BVH %.1f ms; %zu rays in %.1f ms (%.2f Mrays/s); epsilon %g\n",
                 ref.triangles, ref.bvh_ms, ref.exact.rays, ref.exact.ms, rays_per_s / 1e6, double(ref.exact.epsilon));
@@ -205,7 +206,7 @@ int run_eval(const EvalArgs& a) {
       motions.push_back({"shimmer_camera_pct", reference::moved(scene, base.camera, base.height, {a.shimmer_pixels, 0.0f}), {}});
     if (a.shimmer_degrees != 0.0f)
       motions.push_back({"shimmer_light_pct", reference::moved(scene, base.camera, base.height, {0.0f, a.shimmer_degrees}), {}});
-    for (Moved& m : motions) m.ref.emplace(reference::reference_for(m.scene, base, renderer));
+    for (Moved& m : motions) m.ref.emplace(reference::reference_for(m.scene, base, renderer, -1.0f, &textures));
 
     nlohmann::json rows = nlohmann::json::array();
     ContactSheets sheets;  // encoded as each combination ends: a sweep keeps PNG bytes, not whole frames
@@ -216,10 +217,10 @@ int run_eval(const EvalArgs& a) {
       frame::FrameConfig config = base;
       config.technique = c.technique, config.filter = c.filter, config.bias = c.bias, config.map_size = c.map_size;
       config.aliasing = true;  // measured where the technique has a measure (frame/aliasing.h)
-      const reference::ScoredFrame sf = reference::score_config(scene, config, renderer, ref, options);
+      const reference::ScoredFrame sf = reference::score_config(scene, config, renderer, ref, options, &textures);
       std::vector<std::vector<reference::LightShimmer>> shimmers;
       for (const Moved& m : motions) {
-        const reference::ScoredFrame moved = reference::score_config(m.scene, config, renderer, *m.ref, options);
+        const reference::ScoredFrame moved = reference::score_config(m.scene, config, renderer, *m.ref, options, &textures);
         shimmers.push_back(reference::compare_frames(*sf.frame.surface, ref.exact, *moved.frame.surface, m.ref->exact,
                                                      options.shadow_below));
       }

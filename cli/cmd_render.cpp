@@ -334,6 +334,8 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   stage.z_up = a.up == "z";
   std::vector<std::string> notes;
   scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
+  // Loaded once for every frame; a missing texture fails here, before anything is rendered or written.
+  const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);
   frame::FrameConfig config;
   config.camera = choose_camera(scene, a.camera);
   print_notes(notes);
@@ -367,7 +369,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
     progress.update(label + (a.frames > 1 ? "frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames) : "rendering"));
     const Stopwatch watch;
     try {
-      result.emplace(frame::render_frame(scene, config, renderer, &cache));
+      result.emplace(frame::render_frame(scene, config, renderer, &cache, &textures));
     } catch (const frame::FrameError& e) {
       const std::string what = e.what();
       const size_t colon = what.find(": ");

@@ -220,9 +220,14 @@ class Importer {
       mesh.normals = read_.vec3(n, attr + "NORMAL");
       if (mesh.normals.size() != mesh.positions.size()) fail(attr + "NORMAL", "count differs from POSITION");
     }
-    if (const int t = attribute("TEXCOORD_0"); t >= 0) {
-      mesh.texcoords = read_.vec2(t, attr + "TEXCOORD_0");
-      if (mesh.texcoords.size() != mesh.positions.size()) fail(attr + "TEXCOORD_0", "count differs from POSITION");
+    // The set the base-colour texture names (TEXCOORD_0 without one), v turned into GL's t = 1 − v.
+    const std::string uv = "TEXCOORD_" + std::to_string(texcoord_set(prim.material));
+    if (const int t = attribute(uv.c_str()); t >= 0) {
+      mesh.texcoords = read_.vec2(t, attr + uv);
+      if (mesh.texcoords.size() != mesh.positions.size()) fail(attr + uv, "count differs from POSITION");
+      for (glm::vec2& c : mesh.texcoords) c.y = 1.0f - c.y;
+    } else if (uv != "TEXCOORD_0") {
+      fail(attr + uv, "missing: the material's base-colour texture reads it");
     }
     std::vector<uint32_t> indices;
     if (prim.indices >= 0) {
@@ -262,10 +267,85 @@ class Importer {
     m.specular_strength = 0.3f * (1.0f - roughness);
     m.shininess = roughness > 0.0f ? std::clamp(2.0f / std::pow(roughness, 4.0f) - 2.0f, 1.0f, 512.0f) : 512.0f;
     m.double_sided = src.doubleSided;
-    m.texture = texture_path(pbr.baseColorTexture.index, key + ".pbrMetallicRoughness.baseColorTexture");
+    const std::string tex_key = key + ".pbrMetallicRoughness.baseColorTexture";
+    m.texture = texture_path(pbr.baseColorTexture.index, tex_key);
+    if (!m.texture.empty()) {
+      m.texture_transform = texture_transform(pbr.baseColorTexture, tex_key);
+      const int sampler = model_.textures[size_t(pbr.baseColorTexture.index)].sampler;
+      if (sampler >= 0) {
+        if (size_t(sampler) >= model_.samplers.size())
+          fail(indexed("textures", size_t(pbr.baseColorTexture.index)) + ".sampler",
+               "sampler " + std::to_string(sampler) + " does not exist");
+        const tinygltf::Sampler& smp = model_.samplers[size_t(sampler)];
+        const std::string skey = indexed("samplers", size_t(sampler));
+        m.wrap_s = wrap_mode(smp.wrapS, skey + ".wrapS");
+        m.wrap_t = wrap_mode(smp.wrapT, skey + ".wrapT");
+      }
+    }
+    if (src.alphaMode == "MASK") m.alpha_mode = AlphaMode::mask;
+    else if (src.alphaMode == "BLEND") m.alpha_mode = AlphaMode::blend;
+    else if (src.alphaMode != "OPAQUE" && !src.alphaMode.empty())
+      fail(key + ".alphaMode", "unknown alpha mode '" + src.alphaMode + "' (known: OPAQUE, MASK, BLEND)");
+    m.alpha_cutoff = float(src.alphaCutoff);
+    if (!(m.alpha_cutoff >= 0.0f) || !std::isfinite(m.alpha_cutoff))
+      fail(key + ".alphaCutoff", "must be a number of 0 or more");
     out_.materials.push_back(m);
     materials_[size_t(index)] = int(out_.materials.size() - 1);
     return uint32_t(materials_[size_t(index)]);
+  }
+
+  // The TEXCOORD_n a primitive's material reads its base-colour texture through (KHR_texture_transform's
+  // texCoord overrides the texture info's), 0 without a texture.
+  int texcoord_set(int material) const {
+    if (material < 0 || size_t(material) >= model_.materials.size()) return 0;
+    const tinygltf::TextureInfo& info = model_.materials[size_t(material)].pbrMetallicRoughness.baseColorTexture;
+    if (info.index < 0) return 0;
+    int set = std::max(info.texCoord, 0);
+    if (const auto it = info.extensions.find("KHR_texture_transform"); it != info.extensions.end())
+      if (it->second.Has("texCoord") && it->second.Get("texCoord").IsNumber())
+        set = std::max(int(it->second.Get("texCoord").GetNumberAsInt()), 0);
+    return set;
+  }
+
+  // KHR_texture_transform's matrix T = translation · rotation · scale on glTF's (u, v), taken into GL's
+  // (s, t) = (u, 1 − v) as F · T · F with F the flip (F is its own inverse).
+  glm::mat3 texture_transform(const tinygltf::TextureInfo& info, const std::string& key) const {
+    const auto it = info.extensions.find("KHR_texture_transform");
+    if (it == info.extensions.end()) return glm::mat3(1.0f);
+    const tinygltf::Value& x = it->second;
+    const std::string where = key + ".extensions.KHR_texture_transform";
+    auto pair = [&](const char* name, glm::vec2 fallback) {
+      if (!x.Has(name)) return fallback;
+      const tinygltf::Value& v = x.Get(name);
+      if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+        fail(where + "." + name, "expected an array of 2 numbers");
+      const glm::vec2 r(float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble()));
+      if (!std::isfinite(r.x) || !std::isfinite(r.y)) fail(where + "." + name, "must be finite");
+      return r;
+    };
+    const glm::vec2 offset = pair("offset", glm::vec2(0.0f)), scale = pair("scale", glm::vec2(1.0f));
+    float rotation = 0.0f;
+    if (x.Has("rotation")) {
+      if (!x.Get("rotation").IsNumber()) fail(where + ".rotation", "expected a number");
+      rotation = float(x.Get("rotation").GetNumberAsDouble());
+      if (!std::isfinite(rotation)) fail(where + ".rotation", "must be finite");
+    }
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    // Column-major, as the extension's GLSL writes them.
+    const glm::mat3 t(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
+    const glm::mat3 r(c, s, 0, -s, c, 0, 0, 0, 1);
+    const glm::mat3 sc(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+    const glm::mat3 flip(1, 0, 0, 0, -1, 0, 0, 1, 1);  // (u, v) -> (u, 1 - v)
+    return flip * (t * r * sc) * flip;
+  }
+
+  TextureWrap wrap_mode(int gl, const std::string& key) const {
+    switch (gl) {
+      case TINYGLTF_TEXTURE_WRAP_REPEAT: return TextureWrap::repeat;
+      case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::clamp_to_edge;
+      case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::mirrored_repeat;
+      default: fail(key, "unknown wrap mode " + std::to_string(gl));
+    }
   }
 
   std::string texture_path(int texture, const std::string& key) {

@@ -16,7 +16,9 @@
 namespace scenes {
 
 // A triangle list in model space. Front faces are counter-clockwise. `normals` always has one entry per
-// position once a scene is built; `texcoords` is empty or has one entry per position.
+// position once a scene is built; `texcoords` is empty or has one entry per position, in GL's (s, t)
+// orientation: t = 0 is the bottom row of the picture as a viewer shows it (the glTF importer turns v into
+// 1 − v).
 struct Mesh {
   std::string name;
   std::vector<glm::vec3> positions;
@@ -27,11 +29,27 @@ struct Mesh {
   bool operator==(const Mesh&) const = default;
 };
 
-// Blinn-Phong style surface description. `texture` is a path (empty: none); the scenes module never opens it.
+// How a material's alpha (base-colour factor alpha × texture alpha) decides coverage, as glTF's alphaMode:
+// opaque ignores it; mask keeps a fragment where alpha >= alpha_cutoff and discards it elsewhere, in the camera
+// pass and in every shadow depth pass; blend is drawn as mask with a cutoff of 0.5 everywhere (the renderer has
+// no sorted transparency, and a shadow map stores one depth per texel).
+enum class AlphaMode : uint8_t { opaque, mask, blend };
+
+// GL wrap modes a glTF sampler can name for a material texture.
+enum class TextureWrap : uint8_t { repeat, clamp_to_edge, mirrored_repeat };
+
+// Blinn-Phong style surface description. `texture` is a path (empty: none); the scenes module never opens it
+// (scenes/io/scene_textures.h loads every material's texture once per scene).
 struct Material {
   std::string name = "default";
   glm::vec4 base_color{1.0f};       // linear RGBA factor (multiplies the texture when there is one)
   std::string texture;              // base-colour texture path, resolved against the file that named it
+  // Applied to the mesh's texture coordinates (s, t, 1) before the texture is sampled: glTF's
+  // KHR_texture_transform, taken into the GL orientation of Mesh::texcoords.
+  glm::mat3 texture_transform{1.0f};
+  TextureWrap wrap_s = TextureWrap::repeat, wrap_t = TextureWrap::repeat;
+  AlphaMode alpha_mode = AlphaMode::opaque;
+  float alpha_cutoff = 0.5f;        // mask: the least alpha kept
   glm::vec3 specular_color{1.0f};
   float specular_strength = 0.3f;   // specular = specular_color * specular_strength * pow(cos, shininess)
   float shininess = 5.0f;

@@ -63,7 +63,7 @@ ObjectDesc read_object(const JsonIn& j, const std::set<std::string>& materials, 
 
 Material read_material(const JsonIn& j) {
   j.allow_only({"name", "base_color", "texture", "specular_color", "specular_strength", "shininess",
-                "double_sided"});
+                "double_sided", "alpha_mode", "alpha_cutoff"});
   Material m;
   m.name = j.member("name").nonempty_string();
   if (auto c = j.optional("base_color")) {
@@ -77,6 +77,15 @@ Material read_material(const JsonIn& j) {
   read_opt(j, "shininess", m.shininess);
   read_opt(j, "double_sided", m.double_sided);
   if (m.shininess < 0.0f) j.fail_at("shininess", "must not be negative");
+  if (auto a = j.optional("alpha_mode")) {
+    const std::string mode = a->nonempty_string();
+    if (mode == "opaque") m.alpha_mode = AlphaMode::opaque;
+    else if (mode == "mask") m.alpha_mode = AlphaMode::mask;
+    else if (mode == "blend") m.alpha_mode = AlphaMode::blend;
+    else a->fail("unknown alpha mode '" + mode + "' (known: opaque, mask, blend)");
+  }
+  read_opt(j, "alpha_cutoff", m.alpha_cutoff);
+  if (!(m.alpha_cutoff >= 0.0f)) j.fail_at("alpha_cutoff", "must not be negative");
   return m;
 }
 

@@ -141,6 +141,10 @@ Json material_json(const Material& m) {
   j["specular_strength"] = exact(m.specular_strength);
   j["shininess"] = exact(m.shininess);
   j["double_sided"] = m.double_sided;
+  if (m.alpha_mode != AlphaMode::opaque) {
+    j["alpha_mode"] = m.alpha_mode == AlphaMode::mask ? "mask" : "blend";
+    j["alpha_cutoff"] = exact(m.alpha_cutoff);
+  }
   return j;
 }
 

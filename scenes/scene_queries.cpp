@@ -92,6 +92,50 @@ TriangleSoup flatten(const Scene& scene, InstanceFilter filter) {
   return soup;
 }
 
+Coverage coverage(const Material& m) {
+  if (m.alpha_mode == AlphaMode::opaque) return Coverage::opaque;
+  if (!m.texture.empty()) return Coverage::masked;
+  return m.base_color.a >= alpha_cutoff(m) ? Coverage::opaque : Coverage::hidden;
+}
+
+float alpha_cutoff(const Material& m) {
+  switch (m.alpha_mode) {
+    case AlphaMode::opaque: return 0.0f;
+    case AlphaMode::mask: return m.alpha_cutoff;
+    case AlphaMode::blend: return 0.5f;
+  }
+  return 0.0f;
+}
+
+CoverageSoup flatten_by_coverage(const Scene& scene, InstanceFilter filter) {
+  CoverageSoup out;
+  auto cover = [&](const Instance& inst) { return coverage(scene.materials[inst.material]); };
+  reserve_for(out.opaque, scene, scene.instances.size(), [&](size_t k) {
+    const Instance& inst = scene.instances[k];
+    return passes(inst, filter) && cover(inst) == Coverage::opaque ? &inst : nullptr;
+  });
+  std::vector<int> slot(scene.materials.size(), -1);  // material -> index in out.masked
+  for (const Instance& inst : scene.instances) {
+    if (!passes(inst, filter)) continue;
+    const Coverage c = cover(inst);
+    if (c == Coverage::opaque) append(out.opaque, scene, inst);
+    if (c != Coverage::masked) continue;
+    if (slot[inst.material] < 0) {
+      slot[inst.material] = int(out.masked.size());
+      out.masked.push_back(MaskedSoup{inst.material, {}, {}, {}});
+    }
+    MaskedSoup& m = out.masked[size_t(slot[inst.material])];
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    const uint32_t base = uint32_t(m.positions.size());
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+      m.positions.push_back(transform_point(inst.transform, mesh.positions[i]));
+      m.texcoords.push_back(i < mesh.texcoords.size() ? mesh.texcoords[i] : glm::vec2(0.0f));
+    }
+    for (uint32_t i : mesh.indices) m.indices.push_back(base + i);
+  }
+  return out;
+}
+
 TriangleSoup flatten_instances(const Scene& scene, std::span<const uint32_t> instances) {
   TriangleSoup soup;
   reserve_for(soup, scene, instances.size(), [&](size_t k) { return &scene.instances[instances[k]]; });

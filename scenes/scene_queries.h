@@ -57,6 +57,29 @@ struct TriangleSoup {
   size_t triangle_count() const { return indices.size() / 3; }
 };
 TriangleSoup flatten(const Scene& scene, InstanceFilter filter = InstanceFilter::all);
+
+// What a material's alpha does to its surface (Material::alpha_mode): nothing (opaque), a per-fragment alpha
+// test against its texture (masked), or every fragment discarded (hidden: no texture and a factor alpha below
+// the cutoff). A mask with no texture is opaque or hidden as a whole.
+enum class Coverage : uint8_t { opaque, masked, hidden };
+Coverage coverage(const Material& material);
+// The cutoff a fragment's alpha is compared with: alpha_cutoff for mask, 0.5 for blend (scene.h); 0 for opaque.
+float alpha_cutoff(const Material& material);
+
+// World-space triangles of the masked instances of one material, with their texture coordinates.
+struct MaskedSoup {
+  uint32_t material = 0;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec2> texcoords;  // one per position; (0, 0) where the mesh has none
+  std::vector<uint32_t> indices;
+};
+// The instances a depth pass draws, split by coverage: the opaque ones in one soup (the depth-only path), the
+// masked ones per material in instance order (a pass with the alpha test), the hidden ones left out.
+struct CoverageSoup {
+  TriangleSoup opaque;
+  std::vector<MaskedSoup> masked;
+};
+CoverageSoup flatten_by_coverage(const Scene& scene, InstanceFilter filter);
 TriangleSoup flatten_instances(const Scene& scene, std::span<const uint32_t> instances);
 
 }  // namespace scenes

@@ -2,10 +2,13 @@
 // (shading/lighting.h) with the ambient term untouched and diffuse + specular scaled by the light's shadow
 // visibility. Each light is read through its technique's LightShadow with its own filter, once per quad
 // (light_visibility) or, on the pipeline's wide path (fragment_pair), once per quad pair eight lanes wide.
+// Textured materials (BasicCameraShader<true, ...>) take their albedo from factor × texture per pixel
+// (shading/surface_texture.h) on the quad path, and masked ones discard where alpha is below the cutoff.
 #pragma once
 #include <array>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -15,6 +18,7 @@
 #include "raster/simd/vec.h"
 #include "scenes/frame/surface_record.h"
 #include "shading/lighting.h"
+#include "shading/surface_texture.h"
 #include "shading/techniques/technique.h"
 
 namespace frame {
@@ -22,6 +26,13 @@ namespace frame {
 struct CameraVertex {
   glm::vec3 position;  // model space
   glm::vec3 normal;
+};
+
+// The vertex of a textured draw: texture coordinates too (GL's (s, t), scenes::Mesh::texcoords).
+struct TexturedCameraVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 st;
 };
 
 // One light as the camera pass reads it: its shadow (the technique's LightShadow, owned by the frame; null
@@ -55,21 +66,30 @@ struct SurfaceUniforms {
   bool receives_shadows = true;
 };
 
-struct CameraShader {
-  using Vertex = CameraVertex;
+// kTextured: the albedo is SurfaceTexture::color per pixel (the quad path only: the texture's LOD comes from
+// the quad); kMasked: lanes whose alpha is below the cutoff are discarded (early depth testing is then off for
+// the draw). The plain shader (CameraShader) keeps the material's albedo and the wide path.
+template <bool kTextured, bool kMasked = false>
+struct BasicCameraShader {
+  static_assert(kTextured || !kMasked, "the alpha test reads the texture");
+  using Vertex = std::conditional_t<kTextured, TexturedCameraVertex, CameraVertex>;
   struct Varyings {
     glm::vec3 world;
     glm::vec3 normal;
+    [[no_unique_address]] std::conditional_t<kTextured, glm::vec2, raster::NoVaryings> st;
   };
+  static constexpr bool kDiscards = kMasked;
 
   SurfaceUniforms u;
   std::span<const LightRecord> lights;  // owned by the frame, alive for the draw
   SurfaceRecord* record = nullptr;       // optional per-pixel record (surface_record.h), owned by the frame
+  const shading::SurfaceTexture* surface = nullptr;  // kTextured: the material's base colour, owned by the frame
 
   glm::vec4 vertex(const Vertex& v, Varyings& out) const {
     const glm::vec4 w = u.model * glm::vec4(v.position, 1.0f);
     out.world = glm::vec3(w);
     out.normal = u.normal_matrix * v.normal;
+    if constexpr (kTextured) out.st = v.st;
     return u.view_proj * w;
   }
 
@@ -79,10 +99,20 @@ struct CameraShader {
     Points<4> pts;
     // The plane's normal from the quad's position differences (helper lanes are interpolated too).
     const glm::vec3 dx = q.in[1].world - q.in[0].world, dy = q.in[2].world - q.in[0].world;
+    shading::Quad<glm::vec3> albedo{u.material.albedo, u.material.albedo, u.material.albedo, u.material.albedo};
+    unsigned live = q.live;
+    if constexpr (kTextured) {
+      const shading::Quad<glm::vec4> c = surface->color({q.in[0].st, q.in[1].st, q.in[2].st, q.in[3].st});
+      for (size_t l = 0; l < 4; ++l) albedo[l] = glm::vec3(c[l]);
+      if constexpr (kMasked) {
+        out.discard = surface->discarded(c);
+        live &= ~unsigned(out.discard);
+      }
+    }
     for (int lane = 0; lane < 4; ++lane) {
-      if (((q.live >> lane) & 1u) == 0) continue;  // helper lane: never written
+      if (((live >> lane) & 1u) == 0) continue;  // helper lane (or discarded): never written
       const glm::vec4& fc = q.frag_coord[size_t(lane)];
-      pts.add(*this, q.in[size_t(lane)], q.front_facing, glm::vec2(fc.x, fc.y), lane);
+      pts.add(*this, q.in[size_t(lane)], q.front_facing, glm::vec2(fc.x, fc.y), lane, albedo[size_t(lane)]);
       if (record) pts.surface[pts.n - 1] = {dx, dy, fc.z};
     }
     shade(pts, [](const LightRecord& l, auto q, auto vis) { light_visibility(l, q, vis); });
@@ -91,7 +121,9 @@ struct CameraShader {
 
   // The same on a quad pair, pixel by pixel the same operations, with each light's visibility asked for the
   // pair's covered pixels at once so the filters run eight lanes wide (light_visibility_x8).
-  void fragment_pair(const raster::QuadPairIn<Varyings>& q, raster::QuadPairOut& out) const {
+  void fragment_pair(const raster::QuadPairIn<Varyings>& q, raster::QuadPairOut& out) const
+    requires(!kTextured)
+  {
     static_assert(raster::kVaryingFloats<Varyings> == 6);
     alignas(32) float in[6][8], fx[8], fy[8];
     for (size_t k = 0; k < 6; ++k) q.in[k].store(in[k]);
@@ -102,8 +134,8 @@ struct CameraShader {
     auto world = [&](int lane) { return glm::vec3(in[0][lane], in[1][lane], in[2][lane]); };
     for (int lane = 0; lane < 8; ++lane) {
       if (((q.live >> lane) & 1u) == 0) continue;  // helper lane: never written
-      const Varyings v{{in[0][lane], in[1][lane], in[2][lane]}, {in[3][lane], in[4][lane], in[5][lane]}};
-      pts.add(*this, v, q.front_facing, glm::vec2(fx[lane], fy[lane]), lane);
+      const Varyings v{{in[0][lane], in[1][lane], in[2][lane]}, {in[3][lane], in[4][lane], in[5][lane]}, {}};
+      pts.add(*this, v, q.front_facing, glm::vec2(fx[lane], fy[lane]), lane, u.material.albedo);
       if (record) {  // the lane's own quad (lanes b, b + 1, b + 4, b + 5), the same differences as fragment()
         const int b = lane & 2;
         pts.surface[pts.n - 1] = {world(b + 1) - world(b), world(b + 4) - world(b), fz[lane]};
@@ -123,7 +155,7 @@ struct CameraShader {
   template <size_t N>
   struct Points {
     std::array<shading::tech::ShadowQuery, N> q;
-    std::array<glm::vec3, N> view, color;
+    std::array<glm::vec3, N> view, color, albedo;
     std::array<int, N> lane_of;
     struct Surface {
       glm::vec3 dx, dy;  // world position one pixel right and one up, minus the quad's first
@@ -131,12 +163,14 @@ struct CameraShader {
     };
     std::array<Surface, N> surface;  // filled only when recording
     size_t n = 0;
-    void add(const CameraShader& s, const Varyings& in, bool front_facing, glm::vec2 frag, int lane) {
+    void add(const BasicCameraShader& s, const Varyings& in, bool front_facing, glm::vec2 frag, int lane,
+             glm::vec3 surface_albedo) {
       glm::vec3 nrm = glm::normalize(in.normal);
       if (!front_facing) nrm = -nrm;  // double-sided surfaces light their back side
       q[n] = {in.world, nrm, frag};
       view[n] = glm::normalize(s.u.eye - in.world);
       color[n] = glm::vec3(0.0f);
+      albedo[n] = surface_albedo;
       lane_of[n++] = lane;
     }
   };
@@ -150,8 +184,11 @@ struct CameraShader {
       std::array<size_t, N> lit_of;
       size_t m = 0;
       for (size_t i = 0; i < pts.n; ++i) {
-        d[i] = shading::direct_light(u.material, shading::sample_light(l.light, pts.q[i].p), pts.q[i].n, pts.view[i]);
-        pts.color[i] += u.material.albedo * l.light.color * u.material.ambient;
+        shading::Material surface_material = u.material;
+        surface_material.albedo = pts.albedo[i];  // the material's, or factor × texture
+        d[i] = shading::direct_light(surface_material, shading::sample_light(l.light, pts.q[i].p), pts.q[i].n,
+                                     pts.view[i]);
+        pts.color[i] += surface_material.albedo * l.light.color * surface_material.ambient;
         if (d[i].diffuse == glm::vec3(0.0f) && d[i].specular == glm::vec3(0.0f)) continue;
         lit_pts[m] = pts.q[i];
         lit_of[m++] = i;
@@ -203,5 +240,7 @@ struct CameraShader {
     }
   }
 };
+
+using CameraShader = BasicCameraShader<false>;
 
 }  // namespace frame

@@ -16,6 +16,7 @@
 #include "scenes/frame/camera_shader.h"
 #include "scenes/frame/frame_lights.h"
 #include "scenes/frame/projective_shaders.h"
+#include "scenes/io/scene_textures.h"
 #include "scenes/scene_queries.h"
 #include "shading/techniques/depth_pass.h"
 #include "shading/techniques/view_frustum.h"
@@ -35,6 +36,37 @@ std::vector<CameraVertex> camera_vertices(const scenes::Mesh& m) {
     v[i] = CameraVertex{m.positions[i], i < m.normals.size() ? m.normals[i] : glm::vec3(0.0f, 1.0f, 0.0f)};
   return v;
 }
+
+std::vector<TexturedCameraVertex> textured_vertices(const std::vector<CameraVertex>& plain, const scenes::Mesh& m) {
+  std::vector<TexturedCameraVertex> v(plain.size());
+  for (size_t i = 0; i < v.size(); ++i)
+    v[i] = TexturedCameraVertex{plain[i].position, plain[i].normal,
+                                i < m.texcoords.size() ? m.texcoords[i] : glm::vec2(0.0f)};
+  return v;
+}
+
+// The casters of every depth pass, flattened once per frame: opaque triangles in one soup, masked ones per
+// material with their alpha test (tech::CasterGeometry); instances whose material hides them entirely are left
+// out.
+struct FrameCasters {
+  scenes::CoverageSoup soup;
+  std::vector<std::vector<tech::MaskedVertex>> vertices;
+  std::vector<tech::MaskedCasters> masked;  // points into `vertices`, `soup` and the frame's surfaces
+
+  FrameCasters(const scenes::Scene& scene, std::span<const shading::SurfaceTexture> surfaces)
+      : soup(scenes::flatten_by_coverage(scene, scenes::InstanceFilter::casters)) {
+    vertices.resize(soup.masked.size());
+    for (size_t k = 0; k < soup.masked.size(); ++k) {
+      const scenes::MaskedSoup& m = soup.masked[k];
+      vertices[k].resize(m.positions.size());
+      for (size_t i = 0; i < m.positions.size(); ++i) vertices[k][i] = {m.positions[i], m.texcoords[i]};
+      masked.push_back({vertices[k], m.indices, &surfaces[m.material]});
+    }
+  }
+  FrameCasters(const FrameCasters&) = delete;
+  FrameCasters& operator=(const FrameCasters&) = delete;
+  tech::CasterGeometry geometry() const { return {soup.opaque.positions, soup.opaque.indices, masked}; }
+};
 
 // The frame's technique parameters must each reach some light: one no light's technique takes would do nothing.
 void check_params_used(const FrameConfig& config, const std::vector<ResolvedLight>& lights) {
@@ -114,7 +146,7 @@ tech::VisibleSamples visible_samples(const scenes::Scene& scene, const glm::mat4
 }  // namespace
 
 Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster::Renderer& renderer,
-                   FrameCache* cache) {
+                   FrameCache* cache, const scenes::io::SceneTextures* textures) {
   if (config.width < 1 || config.height < 1 || config.width > 16384 || config.height > 16384)
     throw FrameError("size: " + std::to_string(config.width) + "x" + std::to_string(config.height) +
                      " is outside 1..16384");
@@ -131,11 +163,17 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   for (size_t i = 0; i < scene.lights.size(); ++i) resolved.push_back(resolve_light(scene.lights[i], i, config));
   check_params_used(config, resolved);
 
+  // ---- Material textures: the caller's (loaded once per scene), or loaded here for this frame alone; a missing
+  // or unreadable file fails the frame before any work.
+  std::optional<scenes::io::SceneTextures> own_textures;
+  if (!textures) textures = &own_textures.emplace(scenes::io::load_scene_textures(scene));
+  const std::vector<shading::SurfaceTexture> surfaces = scenes::io::surface_textures(scene, *textures);
+
   Frame frame{raster::ColorTarget(config.width, config.height, raster::ColorFormat::rgba8), {}, {}, {}, {}};
 
   // ---- Shadow maps, light by light, through the registry.
   const auto t_shadow = Clock::now();
-  std::optional<scenes::TriangleSoup> casters;  // flattened once, when a light first needs them
+  std::optional<FrameCasters> casters;          // flattened once, when a light first needs them
   std::optional<tech::PlanInputs> inputs;       // scene bounds, computed once
   std::optional<tech::VisibleSamples> visible;  // the camera's depth pre-pass, run when a technique asks
   std::vector<ProjectiveLight> projective_lights;
@@ -174,7 +212,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
                                      scene.instances[k].receives_shadows});
       }
       inputs->fit_memory = cache ? &cache->fits[i] : nullptr;
-      if (!casters) casters = scenes::flatten(scene, scenes::InstanceFilter::casters);
+      if (!casters) casters.emplace(scene, surfaces);
       try {
         lr.shadow = impl->plan(r.desc, r.config, *inputs);
       } catch (const tech::TechniqueError& e) {
@@ -182,7 +220,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
         // Messages that name a light field get the light's place in front; parameter messages already have it.
         throw FrameError(what.rfind("lights[", 0) == 0 ? what : "lights[" + std::to_string(i) + "]." + what);
       }
-      frame.stats.draws += lr.shadow->build(renderer, tech::CasterGeometry{casters->positions, casters->indices});
+      frame.stats.draws += lr.shadow->build(renderer, casters->geometry());
       ++frame.stats.maps_rendered;
     }
     frame.lights.push_back(std::move(lr));
@@ -191,7 +229,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   FrameCache local_cache;
   frame.projective = prepare_projective(scene, projective_lights, config.export_maps,
                                         ProjectiveView{view_proj, config.width, config.height}, renderer,
-                                        (cache ? *cache : local_cache).projective);
+                                        (cache ? *cache : local_cache).projective, surfaces);
   frame.stats.maps_rendered += frame.projective.stats.maps_rebuilt;
   frame.stats.shadow_ms = ms_since(t_shadow);
 
@@ -204,6 +242,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   depth.clear(1.0f);
   frame.color.clear(config.clear_color);
   std::vector<std::vector<CameraVertex>> mesh_vertices(scene.meshes.size());
+  std::vector<std::vector<TexturedCameraVertex>> mesh_textured(scene.meshes.size());  // textured draws only
   frame.view_proj = view_proj;
   frame.eye = camera.position;
   if (config.surface_record) frame.surface.emplace(config.width, config.height, scene.lights.size());
@@ -218,6 +257,8 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
       const scenes::Mesh& mesh = scene.meshes.at(inst.mesh);
       const scenes::Material& mat = scene.materials.at(inst.material);
       if (mesh_vertices[inst.mesh].empty()) mesh_vertices[inst.mesh] = camera_vertices(mesh);
+      const scenes::Coverage coverage = scenes::coverage(mat);
+      if (coverage == scenes::Coverage::hidden) continue;  // every fragment's alpha is below the cutoff
       shader.u.model = inst.transform;
       shader.u.normal_matrix = glm::transpose(glm::inverse(glm::mat3(inst.transform)));
       shader.u.material = shading::Material{glm::vec3(mat.base_color), 0.1f, mat.specular_strength, mat.shininess};
@@ -226,13 +267,24 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
       raster::DrawState s;
       s.cull = mat.double_sided ? raster::CullMode::none : raster::CullMode::back;
       // Drawn once, plus the projective maps overlapping it (projective_shaders.h).
-      auto draw = [&](const auto& sh) {
-        return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, sh,
-                             std::span<const CameraVertex>(mesh_vertices[inst.mesh]),
+      auto draw = [&](const auto& sh, const auto& vertices) {
+        return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, sh, std::span(vertices),
                              std::span<const uint32_t>(mesh.indices), frame.projective, index,
                              frame.surface ? &*frame.surface : nullptr);
       };
-      frame.stats.draws += config.quad_fragments ? draw(raster::QuadPathOnly<CameraShader>{shader}) : draw(shader);
+      const shading::SurfaceTexture& surface = surfaces[inst.material];
+      if (surface.texture) {  // factor × texture per pixel, on the quad path
+        if (mesh_textured[inst.mesh].empty()) mesh_textured[inst.mesh] = textured_vertices(mesh_vertices[inst.mesh], mesh);
+        const auto& vertices = mesh_textured[inst.mesh];
+        if (coverage == scenes::Coverage::masked)
+          frame.stats.draws += draw(BasicCameraShader<true, true>{shader.u, shader.lights, shader.record, &surface}, vertices);
+        else
+          frame.stats.draws += draw(BasicCameraShader<true, false>{shader.u, shader.lights, shader.record, &surface}, vertices);
+      } else {
+        const auto& vertices = mesh_vertices[inst.mesh];
+        frame.stats.draws += config.quad_fragments ? draw(raster::QuadPathOnly<CameraShader>{shader}, vertices)
+                                                   : draw(shader, vertices);
+      }
     }
   }
   frame.stats.camera_ms = ms_since(t_camera);

@@ -20,6 +20,7 @@
 #include "scenes/frame/frame_projective.h"
 #include "scenes/frame/surface_record.h"
 #include "scenes/io/exr_map.h"
+#include "scenes/io/scene_textures.h"
 #include "scenes/scene.h"
 #include "shading/techniques/technique.h"
 
@@ -87,9 +88,12 @@ struct Frame {
 };
 
 // Throws FrameError naming the field for a bad configuration or light setting. `cache` (optional) keeps
-// per-caster projective maps across frames: only those whose light or caster changed are rebuilt.
+// per-caster projective maps across frames: only those whose light or caster changed are rebuilt. `textures`
+// (optional): the scene's material textures, loaded once per scene (scenes/io/scene_textures.h) by a caller
+// that renders several frames; without them the frame loads its own, and a missing or unreadable texture
+// throws scenes::io::IoError naming the file and the material before anything is drawn.
 Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster::Renderer& renderer,
-                   FrameCache* cache = nullptr);
+                   FrameCache* cache = nullptr, const scenes::io::SceneTextures* textures = nullptr);
 
 // A shadow map ready for write_exr_map, with its file stem ("light0-sun", "light2-lamp-caster1-box").
 struct NamedMap {

@@ -140,7 +140,7 @@ raster::Rect shadow_scissor(const tech::CasterFrustum& f, const tech::Box& box, 
 
 ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const ProjectiveLight> lights,
                                    bool export_maps, const ProjectiveView& view, raster::Renderer& renderer,
-                                   tech::ProjectiveCache& cache) {
+                                   tech::ProjectiveCache& cache, std::span<const shading::SurfaceTexture> surfaces) {
   ProjectiveFrame pf;
   pf.overlaps.resize(scene.instances.size());
   pf.stats.receiver_draws.assign(scene.instances.size(), 0);
@@ -205,7 +205,13 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const P
         for (size_t k = 0; k < members.size(); ++k) {
           const scenes::Instance& inst = scene.instances[members[k]];
           const scenes::Mesh& mesh = scene.meshes[inst.mesh];
+          const scenes::Coverage coverage = scenes::coverage(scene.materials[inst.material]);
+          if (coverage == scenes::Coverage::hidden) continue;
           tech::CasterPart part;
+          if (coverage == scenes::Coverage::masked && inst.material < surfaces.size()) {
+            part.alpha = &surfaces[inst.material];
+            part.texcoords = mesh.texcoords;
+          }
           part.positions.reserve(mesh.positions.size());
           for (const glm::vec3& p : mesh.positions) {
             part.positions.push_back(transform_point(inst.transform, p));

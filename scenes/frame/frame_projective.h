@@ -84,10 +84,12 @@ struct ProjectiveLight {
 
 // Builds or reuses every projective light's caster maps (cache.begin_frame() … end_frame() inside) and the
 // overlap lists; the maps become EXR records when `export_maps`. No projective light: empty lists (every
-// instance drawn once).
+// instance drawn once). `surfaces` (per material, scenes/io/scene_textures.h): masked casters are drawn with
+// their alpha test, invisible ones left out; empty: every caster opaque.
 ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const ProjectiveLight> lights,
                                    bool export_maps, const ProjectiveView& view, raster::Renderer& renderer,
-                                   shading::tech::ProjectiveCache& cache);
+                                   shading::tech::ProjectiveCache& cache,
+                                   std::span<const shading::SurfaceTexture> surfaces = {});
 
 // The window rectangle (whole pixels, clamped to the viewport) holding every point of `box` that lies in the
 // frustum; the whole viewport when a corner is behind the camera; empty (width 0) when there is none.

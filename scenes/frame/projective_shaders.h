@@ -58,6 +58,7 @@ template <class Base>
 struct SinglePassShader {
   using Vertex = typename Base::Vertex;
   using Varyings = typename Base::Varyings;
+  static constexpr bool kDiscards = raster::shader_discards<Base>();  // a masked surface's alpha test
   Base base;
   std::array<const shading::tech::ProjectiveReader*, kMaxProjectiveTextures> readers{};
   std::array<size_t, kMaxProjectiveTextures> light_of{};  // each map's light, for the record

@@ -1,6 +1,6 @@
 // A frame and its exact shadow in two calls: reference_for renders the camera view once with shadows off and a
 // surface record, builds the BVH over the scene's casters (exactly the triangles the shadow passes rasterise:
-// scenes::flatten with InstanceFilter::casters; receiver-only instances cast nothing there and here) and casts the
+// scenes::flatten_by_coverage with InstanceFilter::casters, masked casters alpha-tested; receiver-only instances cast nothing there and here) and casts the
 // rays; score_config renders one configuration of the same view and scores it against that reference.
 #pragma once
 #include "raster/renderer.h"
@@ -20,8 +20,10 @@ struct FrameReference {
 
 // `config`'s size and camera are used; its shadow settings are replaced by technique none. `epsilon` < 0: the
 // default_epsilon of the scene. Throws frame::FrameError for a bad size or camera, ReferenceError from Embree.
+// `textures`: the scene's material textures (loaded here when null); masked casters are tested against their
+// alpha as in the depth passes; only this call reads them.
 FrameReference reference_for(const scenes::Scene& scene, frame::FrameConfig config, raster::Renderer& renderer,
-                             float epsilon = -1.0f);
+                             float epsilon = -1.0f, const scenes::io::SceneTextures* textures = nullptr);
 
 struct ScoredFrame {
   frame::Frame frame;  // with its surface record
@@ -32,6 +34,7 @@ struct ScoredFrame {
 // Renders `config` (its surface record switched on) and scores it. Throws frame::FrameError for a bad setting,
 // ReferenceError when the frame's covered pixels differ from the reference's (another size or camera).
 ScoredFrame score_config(const scenes::Scene& scene, frame::FrameConfig config, raster::Renderer& renderer,
-                         const FrameReference& ref, const ScoreOptions& options = {});
+                         const FrameReference& ref, const ScoreOptions& options = {},
+                         const scenes::io::SceneTextures* textures = nullptr);
 
 }  // namespace reference

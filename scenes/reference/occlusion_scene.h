@@ -2,13 +2,18 @@
 // passes rasterised) answering occlusion rays. Triangles are two-sided: a ray is blocked by either face, as a
 // shadow map built from front and back faces is. Embree may use its own threads to build; queries are const and
 // safe from any thread, and their answer depends only on the ray and the triangles, not on the BVH's shape.
+// Alpha-masked casters are a geometry of their own with an occlusion filter that rejects a hit where the
+// material's alpha (level 0 of its texture at the hit's texture coordinates) is below the cutoff, the alpha test
+// the depth passes run (shading/surface_texture.h).
 #pragma once
 #include <memory>
+#include <span>
 #include <stdexcept>
 
 #include <glm/vec3.hpp>
 
 #include "scenes/scene_queries.h"
+#include "shading/surface_texture.h"
 
 namespace reference {
 
@@ -20,6 +25,9 @@ struct ReferenceError : std::runtime_error {
 class OcclusionScene {
  public:
   explicit OcclusionScene(const scenes::TriangleSoup& triangles);
+  // The opaque soup as above, and each masked material's triangles tested against surfaces[material]; the
+  // surfaces (and their textures) must outlive the scene.
+  OcclusionScene(const scenes::CoverageSoup& casters, std::span<const shading::SurfaceTexture> surfaces);
   ~OcclusionScene();
   OcclusionScene(const OcclusionScene&) = delete;
   OcclusionScene& operator=(const OcclusionScene&) = delete;

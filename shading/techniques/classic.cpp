@@ -56,7 +56,7 @@ class ClassicShadow final : public LightShadow {
 
   raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& c) override {
     const raster::DrawStats stats =
-        build_maps(renderer, set_, c.positions, c.indices, classic_depth_options(settings_));
+        build_maps(renderer, set_, c, classic_depth_options(settings_));
     reader_ = make_classic_reader(set_, light_, settings_);
     return stats;
   }

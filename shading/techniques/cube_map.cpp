@@ -28,9 +28,8 @@ ShadowMapSet plan_cube_map(const OmniLight& light, const OmniSettings& s) {
 }
 
 raster::DrawStats build_cube_map(raster::Renderer& renderer, ShadowMapSet& set, const OmniLight& light,
-                                 const OmniSettings& s, std::span<const glm::vec3> positions,
-                                 std::span<const uint32_t> indices) {
-  return draw_omni_passes(renderer, set, positions, indices, s.cull_front, [&](const ShadowPass& p) {
+                                 const OmniSettings& s, const CasterGeometry& casters) {
+  return draw_omni_passes(renderer, set, casters, s.cull_front, [&](const ShadowPass& p) {
     return RadialDepthShader{p.proj * p.view, light.position, 1.0f / light.range};
   });
 }

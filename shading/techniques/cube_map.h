@@ -15,8 +15,7 @@ namespace shading::tech {
 ShadowMapSet plan_cube_map(const OmniLight& light, const OmniSettings& s);
 
 raster::DrawStats build_cube_map(raster::Renderer& renderer, ShadowMapSet& set, const OmniLight& light,
-                                 const OmniSettings& s, std::span<const glm::vec3> positions,
-                                 std::span<const uint32_t> indices);
+                                 const OmniSettings& s, const CasterGeometry& casters);
 
 // The faces as a TextureCube of views into the set's target.
 TextureCube cube_texture(const ShadowMapSet& set);

@@ -1,6 +1,8 @@
 // Building shadow maps: depth-only draws of world-space triangles, one per pass (see depth_pass.h).
 #include "shading/techniques/depth_pass.h"
 
+#include "shading/techniques/masked_depth.h"
+
 namespace shading::tech {
 
 ShadowMapSet single_map_layout(int size, raster::DepthFormat format, const char* label) {
@@ -13,8 +15,8 @@ ShadowMapSet single_map_layout(int size, raster::DepthFormat format, const char*
   return set;
 }
 
-raster::DrawStats build_maps(raster::Renderer& renderer, ShadowMapSet& set, std::span<const glm::vec3> positions,
-                             std::span<const uint32_t> indices, const DepthPassOptions& options) {
+raster::DrawStats build_maps(raster::Renderer& renderer, ShadowMapSet& set, const CasterGeometry& casters,
+                             const DepthPassOptions& options) {
   for (auto& t : set.targets) t->clear(1.0f);
   raster::DrawStats stats;
   for (const ShadowPass& p : set.passes) {
@@ -24,8 +26,8 @@ raster::DrawStats build_maps(raster::Renderer& renderer, ShadowMapSet& set, std:
     s.cull = options.cull_front ? raster::CullMode::front : raster::CullMode::none;
     s.polygon_offset = options.offset;
     s.color_write = false;
-    stats += renderer.draw(raster::RenderTargets{set.targets[p.target].get(), nullptr}, s,
-                           WorldDepthShader{p.proj * p.view}, positions, indices);
+    stats += draw_casters(renderer, raster::RenderTargets{set.targets[p.target].get(), nullptr}, s,
+                          WorldDepthShader{p.proj * p.view}, casters);
   }
   return stats;
 }

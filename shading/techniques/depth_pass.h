@@ -1,5 +1,6 @@
 // How a ShadowMapSet is built: every pass draws world-space triangles into its viewport of its target with a
-// depth-only shader (the lean path of the pipeline: no varyings, no colour). Culling and polygon offset are
+// depth-only shader (the lean path of the pipeline: no varyings, no colour); alpha-masked casters go through the
+// same shader with their alpha test (masked_depth.h). Culling and polygon offset are
 // the per-draw state of the depth pass; the classic technique's `offset` bias and back-face option live here.
 #pragma once
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "raster/renderer.h"
+#include "shading/techniques/caster_geometry.h"
 #include "shading/techniques/shadow_map_set.h"
 
 namespace shading::tech {
@@ -30,7 +32,7 @@ struct DepthPassOptions {
 ShadowMapSet single_map_layout(int size, raster::DepthFormat format, const char* label = "main");
 
 // Clears every target to 1.0 and draws every pass. Returns the summed draw statistics.
-raster::DrawStats build_maps(raster::Renderer& renderer, ShadowMapSet& set, std::span<const glm::vec3> positions,
-                             std::span<const uint32_t> indices, const DepthPassOptions& options);
+raster::DrawStats build_maps(raster::Renderer& renderer, ShadowMapSet& set, const CasterGeometry& casters,
+                             const DepthPassOptions& options);
 
 }  // namespace shading::tech

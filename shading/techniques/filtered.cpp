@@ -110,7 +110,7 @@ class FilteredShadow final : public LightShadow {
         radius_(radius) {}
 
   raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& c) override {
-    raster::DrawStats stats = build_maps(renderer, set_, c.positions, c.indices, classic_depth_options(settings_));
+    raster::DrawStats stats = build_maps(renderer, set_, c, classic_depth_options(settings_));
     stats += filter_classic_map(renderer, set_, light_, settings_.bias, params_, radius_, filtered_);
     return stats;
   }

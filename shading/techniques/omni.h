@@ -17,6 +17,7 @@
 #include "raster/renderer.h"
 #include "shading/sampler.h"
 #include "shading/texture_cube.h"
+#include "shading/techniques/masked_depth.h"
 #include "shading/techniques/shadow_filters.h"
 #include "shading/techniques/shadow_map_set.h"
 #include "shading/techniques/vocabulary.h"
@@ -115,11 +116,12 @@ inline OmniRef omni_ref(const OmniReader& r, glm::vec3 p, glm::vec3 n) {
   return o;
 }
 
-// Draws every pass of `set` with the shader make(pass) returns (each pass in its viewport, scissored to it),
+// Draws every pass of `set` with the shader make(pass) returns, called once per pass (each pass in its viewport,
+// scissored to it; masked casters with that shader's alpha-tested form, masked_depth.h),
 // after clearing the depth targets to 1 and any colour targets to `clear_color`.
 template <class MakeShader>
-raster::DrawStats draw_omni_passes(raster::Renderer& renderer, ShadowMapSet& set, std::span<const glm::vec3> positions,
-                                   std::span<const uint32_t> indices, bool cull_front, MakeShader&& make,
+raster::DrawStats draw_omni_passes(raster::Renderer& renderer, ShadowMapSet& set, const CasterGeometry& casters,
+                                   bool cull_front, MakeShader&& make,
                                    glm::vec4 clear_color = glm::vec4(1.0f)) {
   for (auto& t : set.targets) t->clear(1.0f);
   for (auto& c : set.colors)
@@ -133,7 +135,7 @@ raster::DrawStats draw_omni_passes(raster::Renderer& renderer, ShadowMapSet& set
     s.cull = cull_front ? raster::CullMode::front : raster::CullMode::none;
     raster::ColorTarget* color = p.target < set.colors.size() ? set.colors[p.target].get() : nullptr;
     s.color_write = color != nullptr;
-    stats += renderer.draw(raster::RenderTargets{set.targets[p.target].get(), color}, s, make(p), positions, indices);
+    stats += draw_casters(renderer, raster::RenderTargets{set.targets[p.target].get(), color}, s, make(p), casters);
   }
   return stats;
 }

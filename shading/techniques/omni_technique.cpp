@@ -57,15 +57,15 @@ class OmniShadow final : public LightShadow {
     raster::DrawStats stats;
     switch (kind_) {
       case OmniKind::cube:
-        stats = build_cube_map(renderer, set_, light_, s_, c.positions, c.indices);
+        stats = build_cube_map(renderer, set_, light_, s_, c);
         reader_ = make_cube_reader(set_, light_, s_);
         break;
       case OmniKind::paraboloid:
-        stats = build_paraboloid_map(renderer, set_, light_, s_, c.positions, c.indices);
+        stats = build_paraboloid_map(renderer, set_, light_, s_, c);
         reader_ = make_paraboloid_reader(set_, light_, s_);
         break;
       case OmniKind::pyramid:
-        stats = build_pyramid_map(renderer, set_, light_, s_, c.positions, c.indices);
+        stats = build_pyramid_map(renderer, set_, light_, s_, c);
         reader_ = make_pyramid_reader(set_, light_, s_);
         break;
     }

@@ -29,13 +29,12 @@ ShadowMapSet plan_paraboloid_map(const OmniLight& light, const OmniSettings& s) 
 }
 
 raster::DrawStats build_paraboloid_map(raster::Renderer& renderer, ShadowMapSet& set, const OmniLight& light,
-                                       const OmniSettings& s, std::span<const glm::vec3> positions,
-                                       std::span<const uint32_t> indices) {
+                                       const OmniSettings& s, const CasterGeometry& casters) {
   const glm::mat4 to_light = paraboloid_frame(light, s).matrix();
   float side = 1.0f;
   auto draw = [&]<bool kPack>() {
     return draw_omni_passes(
-        renderer, set, positions, indices, s.cull_front,
+        renderer, set, casters, s.cull_front,
         [&](const ShadowPass&) {
           const ParaboloidDepthShader<kPack> sh{to_light, side, 1.0f / light.range};
           side = -side;

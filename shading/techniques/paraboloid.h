@@ -79,8 +79,7 @@ LightFrame paraboloid_frame(const OmniLight& light, const OmniSettings& s);
 ShadowMapSet plan_paraboloid_map(const OmniLight& light, const OmniSettings& s);
 
 raster::DrawStats build_paraboloid_map(raster::Renderer& renderer, ShadowMapSet& set, const OmniLight& light,
-                                       const OmniSettings& s, std::span<const glm::vec3> positions,
-                                       std::span<const uint32_t> indices);
+                                       const OmniSettings& s, const CasterGeometry& casters);
 
 // The stored depth of a pass as a d32f texture: a view of the depth target, or for RGBA8 packing the colour
 // target unpacked texel by texel.

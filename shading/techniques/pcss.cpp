@@ -123,7 +123,7 @@ class PcssShadow final : public LightShadow {
 
   raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& c) override {
     const raster::DrawStats stats =
-        build_maps(renderer, set_, c.positions, c.indices, classic_depth_options(settings_));
+        build_maps(renderer, set_, c, classic_depth_options(settings_));
     r_ = make_pcss_reader(set_, light_, settings_, size_);
     return stats;
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "shading/techniques/caster_decimate.h"
+#include "shading/techniques/masked_depth.h"
 
 namespace shading::tech {
 
@@ -45,9 +46,18 @@ CasterMap build_caster_map(raster::Renderer& renderer, const ProjectiveLight& li
     const float cell = settings.decimate ? 0.5f * m.frustum.texel_world : 0.0f;
     for (const CasterPart& part : parts) {
       if (part.indices.empty()) continue;
+      shader.shade = part.shade;
+      if (part.alpha) {  // the alpha test needs every texture coordinate: not decimated
+        std::vector<MaskedVertex> vertices(part.positions.size());
+        for (size_t i = 0; i < vertices.size(); ++i)
+          vertices[i] = {part.positions[i], i < part.texcoords.size() ? part.texcoords[i] : glm::vec2(0.0f)};
+        m.triangles += part.indices.size() / 3;
+        renderer.draw(raster::RenderTargets{nullptr, m.target.get()}, s, MaskedDepthShader<CasterMaskShader>{shader, part.alpha},
+                      std::span<const MaskedVertex>(vertices), std::span<const uint32_t>(part.indices));
+        continue;
+      }
       const DecimatedMesh mesh = cluster_vertices(part.positions, part.indices, cell);
       if (mesh.indices.empty()) continue;
-      shader.shade = part.shade;
       m.triangles += mesh.indices.size() / 3;
       renderer.draw(raster::RenderTargets{nullptr, m.target.get()}, s, shader,
                     std::span<const glm::vec3>(mesh.positions), std::span<const uint32_t>(mesh.indices));

@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "raster/renderer.h"
+#include "shading/surface_texture.h"
 #include "shading/texture.h"
 #include "shading/techniques/projective_frustum.h"
 #include "shading/techniques/projective_types.h"
@@ -23,6 +24,10 @@ struct CasterPart {
   std::vector<glm::vec3> positions;
   std::vector<uint32_t> indices;
   float shade = 0.0f;
+  // An alpha-masked part: its texture coordinates (one per position) and alpha test; drawn undecimated with
+  // the test in front of the mask shader (masked_depth.h). Null: opaque.
+  std::vector<glm::vec2> texcoords;
+  const SurfaceTexture* alpha = nullptr;
 };
 
 // How many mip levels a lookup may read and how wide the white ring must be for every one of them to have

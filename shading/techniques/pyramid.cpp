@@ -46,11 +46,10 @@ ShadowMapSet plan_pyramid_map(const OmniLight& light, const OmniSettings& s) {
 }
 
 raster::DrawStats build_pyramid_map(raster::Renderer& renderer, ShadowMapSet& set, const OmniLight& light,
-                                    const OmniSettings& s, std::span<const glm::vec3> positions,
-                                    std::span<const uint32_t> indices) {
+                                    const OmniSettings& s, const CasterGeometry& casters) {
   const float center = 0.5f * float(set.targets.at(0)->width());
   int k = 0;
-  return draw_omni_passes(renderer, set, positions, indices, s.cull_front, [&](const ShadowPass& p) {
+  return draw_omni_passes(renderer, set, casters, s.cull_front, [&](const ShadowPass& p) {
     return PyramidDepthShader{RadialDepthShader{p.proj * p.view, light.position, 1.0f / light.range}, k++, center};
   });
 }

@@ -77,8 +77,7 @@ struct PyramidDepthShader {
 };
 
 raster::DrawStats build_pyramid_map(raster::Renderer& renderer, ShadowMapSet& set, const OmniLight& light,
-                                    const OmniSettings& s, std::span<const glm::vec3> positions,
-                                    std::span<const uint32_t> indices);
+                                    const OmniSettings& s, const CasterGeometry& casters);
 
 // Samplers with legacy GL_CLAMP on both axes; the border depth is 1 (nothing there: lit).
 OmniReader make_pyramid_reader(const ShadowMapSet& set, const OmniLight& light, const OmniSettings& s);

@@ -33,7 +33,7 @@ SliceSet::SliceSet(Technique technique, std::vector<FittedMap> fits, std::vector
 }
 
 raster::DrawStats SliceSet::build(raster::Renderer& renderer, const CasterGeometry& c) {
-  const raster::DrawStats stats = build_maps(renderer, set_, c.positions, c.indices, options_);
+  const raster::DrawStats stats = build_maps(renderer, set_, c, options_);
   maps_.clear();
   for (size_t k = 0; k < fits_.size(); ++k) maps_.push_back(make_slice_map(set_, k, fits_[k].depth_extent));
   return stats;

@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include "raster/renderer.h"
+#include "shading/techniques/caster_geometry.h"
 #include "shading/techniques/light_frustum.h"
 #include "shading/techniques/shadow_filters.h"
 #include "shading/techniques/vocabulary.h"
@@ -105,12 +106,6 @@ struct PlanInputs {
   // The light's fitted box of the previous frame of a sequence, read and updated by fits that smooth over
   // time (fit = tutorial); null for a single frame.
   FitMemory* fit_memory = nullptr;
-};
-
-// World-space caster triangles, drawn into every pass.
-struct CasterGeometry {
-  std::span<const glm::vec3> positions;
-  std::span<const uint32_t> indices;
 };
 
 // One pass of an exported map: its viewport in the image and its matrices.

@@ -50,9 +50,21 @@ scenes::SceneDesc every_field(const std::string& gltf_path) {
   scenes::SceneDesc d;
   d.name = "everything";
   d.description = "every field away from its default";
-  d.materials.push_back(
-      {"paint", {0.1f, 0.2f, 0.3f, 0.4f}, "textures/paint.png", {0.5f, 0.6f, 0.7f}, 0.8f, 33.0f, true});
-  d.materials.push_back({"plain", {0.7f, 0.7f, 0.7f, 1.0f}, "", {1, 1, 1}, 0.3f, 5.0f, false});
+  scenes::Material paint;
+  paint.name = "paint";
+  paint.base_color = {0.1f, 0.2f, 0.3f, 0.4f};
+  paint.texture = "textures/paint.png";
+  paint.specular_color = {0.5f, 0.6f, 0.7f};
+  paint.specular_strength = 0.8f;
+  paint.shininess = 33.0f;
+  paint.double_sided = true;
+  paint.alpha_mode = scenes::AlphaMode::mask;
+  paint.alpha_cutoff = 0.375f;
+  d.materials.push_back(paint);
+  scenes::Material plain;
+  plain.name = "plain";
+  plain.base_color = {0.7f, 0.7f, 0.7f, 1.0f};
+  d.materials.push_back(plain);
 
   using namespace scenes;
   const Shape shapes[] = {PlaneShape{{3, 4}, 5},       BoxShape{{1, 2, 3}},

@@ -4,5 +4,6 @@ list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/exact_visibility_te
      ${CMAKE_CURRENT_LIST_DIR}/shadow_score_test.cpp
      ${CMAKE_CURRENT_LIST_DIR}/convergence_test.cpp
      ${CMAKE_CURRENT_LIST_DIR}/error_map_test.cpp
-     ${CMAKE_CURRENT_LIST_DIR}/shimmer_test.cpp)
+     ${CMAKE_CURRENT_LIST_DIR}/shimmer_test.cpp
+     ${CMAKE_CURRENT_LIST_DIR}/masked_occlusion_test.cpp)
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::reference)

@@ -40,7 +40,7 @@ Filtered build(raster::Renderer& r, const techtest::Soup& soup, const MomentPara
   s.depth_format = raster::DepthFormat::d32f;
   Filtered f;
   f.set = std::make_unique<ShadowMapSet>(plan_classic_map(kSun, s, fixed_fit()));
-  build_maps(r, *f.set, soup.positions, soup.indices, classic_depth_options(s));
+  build_maps(r, *f.set, CasterGeometry{soup.positions, soup.indices, {}}, classic_depth_options(s));
   filter_classic_map(r, *f.set, kSun, s.bias, m, radius, f.map);
   return f;
 }

@@ -24,17 +24,17 @@ inline BuiltOmni build_omni(raster::Renderer& r, tech::OmniKind kind, const tech
   switch (kind) {
     case tech::OmniKind::cube:
       *b.set = tech::plan_cube_map(light, s);
-      tech::build_cube_map(r, *b.set, light, s, soup.positions, soup.indices);
+      tech::build_cube_map(r, *b.set, light, s, tech::CasterGeometry{soup.positions, soup.indices, {}});
       b.reader = tech::make_cube_reader(*b.set, light, s);
       break;
     case tech::OmniKind::paraboloid:
       *b.set = tech::plan_paraboloid_map(light, s);
-      tech::build_paraboloid_map(r, *b.set, light, s, soup.positions, soup.indices);
+      tech::build_paraboloid_map(r, *b.set, light, s, tech::CasterGeometry{soup.positions, soup.indices, {}});
       b.reader = tech::make_paraboloid_reader(*b.set, light, s);
       break;
     case tech::OmniKind::pyramid:
       *b.set = tech::plan_pyramid_map(light, s);
-      tech::build_pyramid_map(r, *b.set, light, s, soup.positions, soup.indices);
+      tech::build_pyramid_map(r, *b.set, light, s, tech::CasterGeometry{soup.positions, soup.indices, {}});
       b.reader = tech::make_pyramid_reader(*b.set, light, s);
       break;
   }

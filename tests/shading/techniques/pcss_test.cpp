@@ -37,7 +37,7 @@ Built build(raster::Renderer& r, const techtest::Soup& soup, const ClassicLight&
   s.depth_format = raster::DepthFormat::d32f;
   Built b;
   b.set = std::make_unique<ShadowMapSet>(plan_classic_map(light, s, fit));
-  build_maps(r, *b.set, soup.positions, soup.indices, classic_depth_options(s));
+  build_maps(r, *b.set, shading::tech::CasterGeometry{soup.positions, soup.indices, {}}, classic_depth_options(s));
   b.reader = make_pcss_reader(*b.set, light, s, size);
   return b;
 }

@@ -35,7 +35,7 @@ inline Built build_classic(raster::Renderer& r, const Soup& soup, const shading:
                            const shading::tech::ClassicSettings& s, const shading::tech::ClassicFit& fit) {
   Built b;
   b.set = std::make_unique<shading::tech::ShadowMapSet>(shading::tech::plan_classic_map(light, s, fit));
-  shading::tech::build_maps(r, *b.set, soup.positions, soup.indices, shading::tech::classic_depth_options(s));
+  shading::tech::build_maps(r, *b.set, shading::tech::CasterGeometry{soup.positions, soup.indices, {}}, shading::tech::classic_depth_options(s));
   b.reader = shading::tech::make_classic_reader(*b.set, light, s);
   return b;
 }
