@@ -75,9 +75,11 @@ std::string eval_csv(const nlohmann::json& results) {
 void write_eval_report(const std::filesystem::path& dir, const nlohmann::json& report, const ContactSheets& sheets) {
   const std::string html = eval_html(report, sheets);  // before anything is staged: a missing sheet writes nothing
   scenes::io::WriteBatch batch;
-  for (const auto& [label, png] : sheets)
-    batch.stage(dir / (label + ".png"),
+  for (const auto& sheet : sheets) {
+    const auto& png = sheet.second;  // a plain reference: clang 14 cannot capture a structured binding
+    batch.stage(dir / (sheet.first + ".png"),
                 [&](const std::filesystem::path& tmp) { scenes::io::write_bytes(tmp, png.data(), png.size()); });
+  }
   stage_text(batch, dir / "eval.json", report.dump(2) + "\n");
   stage_text(batch, dir / "eval.csv", eval_csv(report.at("results")));
   stage_text(batch, dir / "eval.html", html);
