@@ -231,8 +231,9 @@ std::unique_ptr<LightShadow> plan_cascades(const LightDesc& light, const ShadowC
     const MomentKind k = kind == "esm" ? MomentKind::esm
                        : kind == "vsm" ? MomentKind::vsm
                        : kind == "evsm2" ? MomentKind::evsm2 : MomentKind::evsm4;
-    moments = SliceMoments{moment_params(k, c), int(p.number("blur_radius")), {}, {}};
-    moments->sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
+    moments.emplace();
+    moments->params = moment_params(k, c);
+    moments->blur_radius = int(p.number("blur_radius"));
   }
   CascadePlan plan = plan_cascade_fits(light, s, c.map_size, in);
   return std::make_unique<CascadeShadow>(Technique::cascades, std::move(plan), s, light, c, in.camera,
