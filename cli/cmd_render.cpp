@@ -315,6 +315,16 @@ nlohmann::json frame_json(int number, double total_ms, const frame::Frame& f, co
     j["projective"] = {{"maps_rebuilt", s.projective.maps_rebuilt},
                        {"maps_reused", s.projective.maps_reused},
                        {"maps_skipped", s.projective.maps_skipped}};
+  nlohmann::json technique_stats = nlohmann::json::array();
+  for (const frame::LightResult& l : f.lights) {
+    if (!l.shadow) continue;
+    nlohmann::json figures = nlohmann::json::object();
+    for (const shading::tech::TechniqueStat& t : l.shadow->stats()) figures[t.name] = t.value;
+    if (!figures.empty())
+      technique_stats.push_back(
+          {{"light", l.name}, {"technique", shading::tech::to_string(l.technique)}, {"stats", figures}});
+  }
+  if (!technique_stats.empty()) j["technique_stats"] = technique_stats;
   return j;
 }
 
@@ -388,6 +398,16 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
       if (s.projective.active)
         std::printf("frame %d: maps rebuilt %zu, reused %zu, skipped %zu\n", i + 1, s.projective.maps_rebuilt,
                     s.projective.maps_reused, s.projective.maps_skipped);
+      for (const frame::LightResult& l : result->lights) {
+        if (!l.shadow) continue;
+        std::string line;
+        for (const shading::tech::TechniqueStat& t : l.shadow->stats()) {
+          char value[64];
+          std::snprintf(value, sizeof value, "%s %.6g", t.name.c_str(), t.value);
+          line += (line.empty() ? "" : ", ") + std::string(value);
+        }
+        if (!line.empty()) std::printf("frame %d: %s: %s\n", i + 1, l.name.c_str(), line.c_str());
+      }
     }
     frames.push_back(frame_json(i + 1, total, *result, config));
     // An image sequence writes every frame; otherwise the last frame is the one written.

@@ -25,3 +25,14 @@ for scene in tutorial duel; do
   "$bin" eval "$scene" --techniques shadowmap --filters pcf,poisson --out "$out/$scene-classic"
   "$bin" eval "$scene" --techniques esm,vsm,evsm2,evsm4,pcss --out "$out/$scene-filtered"
 done
+# Issue 21: the irregular z-buffer (exact, no bias) beside the classic map, cascades and the face-split maps (PCF,
+# normal offset, 2048²), on tutorial, duel and two large shared glTF models staged with a sun and a ground
+# (assets folder: SHADOWLAB_ASSETS, default ../shared/assets). The irregular rows run on their own so that no
+# map size is forced on them (for irregular --map-size is the grid's largest side, default 4096).
+assets=${SHADOWLAB_ASSETS:-../shared/assets}
+for scene in tutorial duel "$assets/stanford_dragon/dragon_vrip.glb" "$assets/flight_helmet/FlightHelmet.gltf"; do
+  name=$(basename "$scene"); name=${name%.*}
+  "$bin" eval "$scene" --techniques irregular --out "$out/$name-irregular"
+  "$bin" eval "$scene" --techniques shadowmap,cascades,frustum-faces --filters pcf --biases normal --sizes 2048 \
+      --out "$out/$name-maps"
+done

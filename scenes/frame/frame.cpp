@@ -14,6 +14,7 @@
 #include "raster/quad_path_only.h"
 #include "scenes/camera_math.h"
 #include "scenes/frame/camera_shader.h"
+#include "scenes/frame/camera_surface.h"
 #include "scenes/frame/frame_lights.h"
 #include "scenes/frame/projective_shaders.h"
 #include "scenes/io/scene_textures.h"
@@ -29,13 +30,6 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 tech::Box to_box(const scenes::Aabb& a) { return tech::Box{a.min, a.max}; }
-
-std::vector<CameraVertex> camera_vertices(const scenes::Mesh& m) {
-  std::vector<CameraVertex> v(m.positions.size());
-  for (size_t i = 0; i < v.size(); ++i)
-    v[i] = CameraVertex{m.positions[i], i < m.normals.size() ? m.normals[i] : glm::vec3(0.0f, 1.0f, 0.0f)};
-  return v;
-}
 
 std::vector<TexturedCameraVertex> textured_vertices(const std::vector<CameraVertex>& plain, const scenes::Mesh& m) {
   std::vector<TexturedCameraVertex> v(plain.size());
@@ -176,6 +170,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   std::optional<FrameCasters> casters;          // flattened once, when a light first needs them
   std::optional<tech::PlanInputs> inputs;       // scene bounds, computed once
   std::optional<tech::VisibleSamples> visible;  // the camera's depth pre-pass, run when a technique asks
+  std::optional<tech::CameraSurface> surface;   // the camera's visible surface, run when a technique asks
   std::vector<ProjectiveLight> projective_lights;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     ResolvedLight& r = resolved[i];
@@ -210,6 +205,10 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
         for (size_t k = 0; per_object && k < scene.instances.size(); ++k)
           inputs->objects.push_back({to_box(scenes::instance_bounds(scene, k)), scene.instances[k].casts_shadows,
                                      scene.instances[k].receives_shadows});
+        inputs->surface = [&]() -> const tech::CameraSurface& {
+          if (!surface) surface = camera_surface(scene, view_proj, camera.position, config.width, config.height, renderer);
+          return *surface;
+        };
       }
       inputs->fit_memory = cache ? &cache->fits[i] : nullptr;
       if (!casters) casters.emplace(scene, surfaces);
@@ -255,17 +254,11 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
     for (size_t index = 0; index < scene.instances.size(); ++index) {
       const scenes::Instance& inst = scene.instances[index];
       const scenes::Mesh& mesh = scene.meshes.at(inst.mesh);
-      const scenes::Material& mat = scene.materials.at(inst.material);
       if (mesh_vertices[inst.mesh].empty()) mesh_vertices[inst.mesh] = camera_vertices(mesh);
+      const scenes::Material& mat = scene.materials.at(inst.material);
       const scenes::Coverage coverage = scenes::coverage(mat);
       if (coverage == scenes::Coverage::hidden) continue;  // every fragment's alpha is below the cutoff
-      shader.u.model = inst.transform;
-      shader.u.normal_matrix = glm::transpose(glm::inverse(glm::mat3(inst.transform)));
-      shader.u.material = shading::Material{glm::vec3(mat.base_color), 0.1f, mat.specular_strength, mat.shininess};
-      shader.u.specular_color = mat.specular_color;
-      shader.u.receives_shadows = inst.receives_shadows;
-      raster::DrawState s;
-      s.cull = mat.double_sided ? raster::CullMode::none : raster::CullMode::back;
+      const raster::DrawState s = camera_instance(scene, index, shader.u);  // as the surface pre-pass draws it
       // Drawn once, plus the projective maps overlapping it (projective_shaders.h).
       auto draw = [&](const auto& sh, const auto& vertices) {
         return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, sh, std::span(vertices),

@@ -7,6 +7,7 @@
 #include "shading/techniques/classic.h"
 #include "shading/techniques/filtered.h"
 #include "shading/techniques/frustum_faces.h"
+#include "shading/techniques/irregular.h"
 #include "shading/techniques/omni_read.h"
 #include "shading/techniques/pcss.h"
 #include "shading/techniques/technique.h"
@@ -30,6 +31,7 @@ constexpr TechniqueImpl kRegistry[] = {
     {Technique::evsm2, Application::light_visibility, &plan_evsm2},
     {Technique::evsm4, Application::light_visibility, &plan_evsm4},
     {Technique::pcss, Application::light_visibility, &plan_pcss},
+    {Technique::irregular, Application::light_visibility, &plan_irregular},
 };
 
 }  // namespace

@@ -90,6 +90,20 @@ struct VisibleSamples {
   float min_distance = 0.0f, max_distance = 0.0f;
 };
 
+// The camera's visible surface, pixel by pixel: what the camera pass will shade at each pixel, from a pre-pass
+// that draws exactly what it draws (scenes/frame/camera_surface.h), for techniques that work on the camera's
+// own samples (the irregular z-buffer). GL order: pixel (x, y) at index y · width + x, row 0 at the bottom.
+struct CameraSurface {
+  int width = 0, height = 0;
+  std::vector<uint8_t> covered;     // 1 where a surface is visible; elsewhere the other values are 0
+  std::vector<glm::vec3> position;  // world space, perspective-correct at the pixel centre
+  std::vector<glm::vec3> normal;    // unit normal of the triangle's plane, on the side the camera sees
+  // How far a shadow ray's origin leaves the surface along `normal`: the ray-cast reference's ε, 10⁻⁴ × the
+  // diagonal of the scene's bounds (docs/ground-truth.md).
+  float epsilon = 0.0f;
+  size_t index(int x, int y) const { return size_t(y) * size_t(width) + size_t(x); }
+};
+
 // What a plan may look at besides the light: the scene's bounds and the camera.
 struct PlanInputs {
   Box casters;                     // bounds of every shadow caster
@@ -106,6 +120,9 @@ struct PlanInputs {
   // The light's fitted box of the previous frame of a sequence, read and updated by fits that smooth over
   // time (fit = tutorial); null for a single frame.
   FitMemory* fit_memory = nullptr;
+  // The camera's visible surface per pixel (a camera pre-pass), computed on first call and kept for the frame;
+  // null where the caller has none to offer.
+  std::function<const CameraSurface&()> surface;
 };
 
 // One pass of an exported map: its viewport in the image and its matrices.
@@ -125,6 +142,13 @@ struct MapRecord {
   std::vector<MapPassRecord> passes;  // empty for a single full-image pass
 };
 
+// A figure a technique reports about its last build (`--stats`, `--json`): a name and a value, e.g. the
+// milliseconds of one step or a count.
+struct TechniqueStat {
+  std::string name;
+  double value = 0.0;
+};
+
 // One light's shadow for one frame: planned by the registry's factory, then built, read and exported.
 class LightShadow {
  public:
@@ -142,6 +166,8 @@ class LightShadow {
     (void)p, (void)others, (void)out;
     return false;
   }
+  // The technique's own figures about its last build (its steps' costs, its counts); empty for most.
+  virtual std::vector<TechniqueStat> stats() const { return {}; }
 };
 
 // How the camera pass applies a technique: through LightShadow::visibility in the lighting sum, or as extra

@@ -39,6 +39,7 @@ enum class Technique : uint8_t {
   evsm2,          // exponential variance shadow map, positive warp only
   evsm4,          // exponential variance shadow map, positive and negative warps
   pcss,           // percentage-closer soft shadows: blocker search, penumbra from the light's size (pcss.h)
+  irregular,      // irregular z-buffer: casters tested exactly at the camera's samples (irregular.h)
 };
 
 // How a map is read. Each is a compile-time filter type (shadow_filters.h); the choice is made once per batch.
@@ -222,6 +223,16 @@ inline constexpr ParamSpec kPcssParams[] = {
     {"light_radius", "--light-radius", ParamKind::number, "0.1", "pcss, spot light: its radius in metres", 0, 100},
 };
 
+// The irregular z-buffer (docs/irregular.md): samples per pixel and the grid's cell bound.
+inline constexpr ParamSpec kIrregularParams[] = {
+    {"samples_per_pixel", "--samples-per-pixel", ParamKind::integer, "1",
+     "irregular: shadow samples per pixel, 1 (the pixel centre), 8 or 32 (on the pixel's footprint, antialiased)",
+     1, 32},
+    {"cell_bound", "--cell-bound", ParamKind::integer, "64",
+     "irregular: most samples per light-space grid cell; a fuller cell refines the grid (up to map_size cells a side)",
+     1, 1e6},
+};
+
 // ---- The defaults table: one row per technique, indexed by Technique.
 inline constexpr uint8_t light_bit(LightType t) { return uint8_t(1u << unsigned(t)); }
 inline constexpr uint8_t kAllLights = 0xF;
@@ -279,6 +290,10 @@ inline constexpr TechniqueInfo kTechniques[] = {
     {Technique::pcss, "pcss", "percentage-closer soft shadows: blocker search, penumbra from the light's size",
      light_bit(LightType::directional) | light_bit(LightType::spot), true, 1024, DepthFormat::d24, "window-depth",
      kPcssParams, false},
+    {Technique::irregular, "irregular",
+     "irregular z-buffer: every caster tested exactly against the camera's visible samples (no bias, no map)",
+     light_bit(LightType::directional) | light_bit(LightType::spot), true, 4096, DepthFormat::d32f, "", kIrregularParams,
+     false},
 };
 
 inline constexpr NamedEntry kLightTypeNames[] = {
@@ -308,7 +323,7 @@ inline constexpr NamedEntry kDepthFormatNames[] = {
     {"d32f", "32-bit float depth"},
 };
 
-static_assert(std::size(kTechniques) == size_t(Technique::pcss) + 1);
+static_assert(std::size(kTechniques) == size_t(Technique::irregular) + 1);
 static_assert(std::size(kFilterNames) == size_t(FilterKind::early_bail) + 1);
 static_assert(std::size(kBiasNames) == size_t(BiasMode::normal) + 1);
 static_assert(std::size(kLightTypeNames) == size_t(LightType::hemispherical) + 1);
