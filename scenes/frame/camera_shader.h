@@ -1,6 +1,7 @@
 // The camera pass's shader: world position and normal as perspective-correct varyings, Blinn-Phong per light
 // (shading/lighting.h) with the ambient term untouched and diffuse + specular scaled by the light's shadow
-// visibility. Each light is read through its technique's LightShadow with its own filter, once per quad
+// visibility. It writes luminance (cd/m², float) with alpha 1 where a surface is drawn; the frame's exposure and
+// tone map turn it into a picture (develop.h). Each light is read through its technique's LightShadow with its own filter, once per quad
 // (light_visibility) or, on the pipeline's wide path (fragment_pair), once per quad pair eight lanes wide.
 #pragma once
 #include <array>
@@ -150,8 +151,9 @@ struct CameraShader {
       std::array<size_t, N> lit_of;
       size_t m = 0;
       for (size_t i = 0; i < pts.n; ++i) {
-        d[i] = shading::direct_light(u.material, shading::sample_light(l.light, pts.q[i].p), pts.q[i].n, pts.view[i]);
-        pts.color[i] += u.material.albedo * l.light.color * u.material.ambient;
+        const shading::LightSample ls = shading::sample_light(l.light, pts.q[i].p);
+        d[i] = shading::direct_light(u.material, ls, pts.q[i].n, pts.view[i]);
+        pts.color[i] += shading::ambient_light(u.material, ls);
         if (d[i].diffuse == glm::vec3(0.0f) && d[i].specular == glm::vec3(0.0f)) continue;
         lit_pts[m] = pts.q[i];
         lit_of[m++] = i;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <variant>
@@ -14,6 +15,7 @@
 #include "raster/quad_path_only.h"
 #include "scenes/camera_math.h"
 #include "scenes/frame/camera_shader.h"
+#include "scenes/frame/develop.h"
 #include "scenes/frame/frame_lights.h"
 #include "scenes/frame/projective_shaders.h"
 #include "scenes/scene_queries.h"
@@ -131,7 +133,11 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   for (size_t i = 0; i < scene.lights.size(); ++i) resolved.push_back(resolve_light(scene.lights[i], i, config));
   check_params_used(config, resolved);
 
-  Frame frame{raster::ColorTarget(config.width, config.height, raster::ColorFormat::rgba8), {}, {}, {}, {}};
+  const float given_ev100 = config.exposure.value_or(scene.look.exposure).ev100.value_or(0.0f);
+  if (!std::isfinite(given_ev100) || std::abs(given_ev100) > 64.0f)
+    throw FrameError("exposure: EV100 " + std::to_string(given_ev100) + " is outside -64..64");
+  Frame frame{raster::ColorTarget(1, 1, raster::ColorFormat::rgba8, true),
+              raster::ColorTarget(config.width, config.height, raster::ColorFormat::rgba32f)};
 
   // ---- Shadow maps, light by light, through the registry.
   const auto t_shadow = Clock::now();
@@ -192,7 +198,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
 
   raster::DepthTarget depth(config.width, config.height, raster::DepthFormat::d24);
   depth.clear(1.0f);
-  frame.color.clear(config.clear_color);
+  frame.radiance.clear(glm::vec4(0.0f));  // alpha 0: the background shows
   std::vector<std::vector<CameraVertex>> mesh_vertices(scene.meshes.size());
   frame.view_proj = view_proj;
   frame.eye = camera.position;
@@ -217,7 +223,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
       s.cull = mat.double_sided ? raster::CullMode::none : raster::CullMode::back;
       // Drawn once, plus the projective maps overlapping it (projective_shaders.h).
       auto draw = [&](const auto& sh) {
-        return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, sh,
+        return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.radiance}, s, sh,
                              std::span<const CameraVertex>(mesh_vertices[inst.mesh]),
                              std::span<const uint32_t>(mesh.indices), frame.projective, index,
                              frame.surface ? &*frame.surface : nullptr);
@@ -225,6 +231,12 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
       frame.stats.draws += config.quad_fragments ? draw(raster::QuadPathOnly<CameraShader>{shader}) : draw(shader);
     }
   }
+  // ---- The picture: exposure, tone map, background, one sRGB encode.
+  const scenes::Exposure exposure = config.exposure.value_or(scene.look.exposure);
+  const shading::ToneMap tone_map = config.tone_map.value_or(scene.look.tone_map);
+  frame.ev100 = exposure.ev100 ? *exposure.ev100 : metered_ev100(frame.radiance, tone_map, renderer.pool());
+  frame.color = develop(frame.radiance, frame.ev100, tone_map, config.background.value_or(scene.look.background),
+                        renderer.pool());
   frame.stats.camera_ms = ms_since(t_camera);
   if (config.aliasing)
     frame.aliasing = measure_aliasing(scene, view_proj, records, mesh_vertices, depth, renderer);

@@ -11,7 +11,7 @@ FrameReference reference_for(const scenes::Scene& scene, frame::FrameConfig conf
                              float epsilon) {
   frame::FrameConfig off;
   off.width = config.width, off.height = config.height, off.camera = config.camera;
-  off.clear_color = config.clear_color;
+  off.exposure = config.exposure, off.tone_map = config.tone_map, off.background = config.background;
   off.technique = shading::tech::Technique::none;
   off.surface_record = true;
   off.export_maps = false;
