@@ -118,7 +118,7 @@ TEST_F(LookCli, BadLookValuesNameTheOption) {
   std::ofstream(dir / "bad.json") << R"({"objects": [{"primitive": {"type": "box"}}], "tonemap": "filmic"})";
   testsupport::expect_bad_run(dir, "render bad.json --size 16x16 --out f.png", "bad.json: tonemap", "f.png");
   std::ofstream(dir / "bad2.json") << R"({"objects": [{"primitive": {"type": "box"}}], "background": {"top": [0, 0, 2]}})";
-  testsupport::expect_bad_run(dir, "render bad2.json --size 16x16 --out f.png", "bad2.json: background", "f.png");
+  testsupport::expect_bad_run(dir, "render bad2.json --size 16x16 --out f.png", "bad2.json: background.top", "f.png");
   std::ofstream(dir / "bad3.json")
       << R"({"objects": [{"primitive": {"type": "box"}}], "lights": [{"type": "point", "intensity": -5}]})";
   testsupport::expect_bad_run(dir, "render bad3.json --size 16x16 --out f.png", "bad3.json: lights[0].intensity", "f.png");
