@@ -41,6 +41,7 @@ Command add_eval_merge_command(CLI::App& parent);
 Command add_list_command(CLI::App& parent);
 Command add_render_merge_command(CLI::App& parent);
 Command add_check_command(CLI::App& parent);
+Command add_scene_command(CLI::App& parent);
 
 struct Size2 {
   int width = 0, height = 0;

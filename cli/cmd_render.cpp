@@ -19,6 +19,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/camera_choice.h"
+#include "cli/look_options.h"
 #include "cli/eval_report.h"
 #include "cli/json_output.h"
 #include "cli/render_line.h"
@@ -56,6 +57,7 @@ struct RenderArgs {
   bool ground = true;         // --ground / --no-ground: a plane under a bare glTF model (scenes/stage.h)
   std::string sun, up = "y";  // --sun AZ,EL for a bare model; --up y|z: the model's up axis
   std::string camera;         // --camera NAME|INDEX|orbit:AZ,EL[,DIST]
+  LookArgs look;              // --exposure, --tonemap, --background
   bool json = false;          // --json: one document on stdout instead of text
   std::string batch, shard;   // --batch FILE, --shard I/N (top level only)
 };
@@ -308,6 +310,7 @@ nlohmann::json frame_json(int number, double total_ms, const frame::Frame& f, co
                       {"height", config.height},
                       {"pixels", size_t(config.width) * size_t(config.height)},
                       {"hash", pixel_hash(f.color)},
+                      {"ev100", f.ev100},
                       {"maps", maps},
                       {"aliasing", aliasing},
                       {"outputs", nlohmann::json::array()}};
@@ -334,6 +337,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   const std::string stem = scene_stem(a.scene);
   const bool sequence = has_frame_field(a.out, "--out");
   const std::vector<frame::AovChannel> aovs = parse_aov_list(a.aov, a.aov_out.empty() ? "" : expand_name(a.aov_out, stem, 1));
+  const LookOverrides look = parse_look(a.look);
 
   scenes::StageOptions stage;
   stage.ground = a.ground;
@@ -369,6 +373,9 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   config.export_maps = !a.maps.empty();  // projective maps become EXR records only when written
   config.aliasing = !a.aliasing.empty();
   config.surface_record = !aovs.empty();
+  config.exposure = look.exposure;
+  config.tone_map = look.tone_map;
+  config.background = look.background;
 
   raster::Renderer renderer(a.threads);
   std::optional<frame::Frame> result;  // Frame has no empty state: the last frame rendered
@@ -581,6 +588,7 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
   app->add_option("--up", args->up, "y|z: a glTF model's up axis (z: rotated to +Y; default y)");
   app->add_option("--camera", args->camera,
                   "NAME, INDEX or orbit:AZ,EL[,DIST]: the camera (orbit: around the casters, framed when DIST is left out)");
+  add_look_options(*app, args->look);
   app->add_flag("--json", args->json, "Print JSON (docs/cli/render.schema.json) instead of text");
   app->add_option("--batch", args->batch,
                   "Run every line of FILE as a render command line (no scene arguments), in one process");

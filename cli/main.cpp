@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
                                         cli::add_inspect_command(app), cli::add_diff_command(app),
                                         cli::add_eval_command(app),    cli::add_eval_merge_command(app),
                                         cli::add_list_command(app),    cli::add_render_merge_command(app),
-                                        cli::add_check_command(app)};
+                                        cli::add_check_command(app),   cli::add_scene_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -40,6 +40,7 @@ SceneDesc duel() {
   d.cameras.push_back(camera("main", {1.5f, 1.7f, 6.0f}, {0.0f, 4.0f, -60.0f}, 40.0f, 0.3f, 300.0f));
 
   Light sun = light("sun", LightType::directional, ShadowTechnique::shadowmap);
+  sun.intensity = 30000.0f;  // lux: a low evening sun
   sun.direction = {0.0f, -0.22f, 1.0f};  // low, from behind the tree towards the camera: a ~60 m shadow
   sun.shadow.depth_format = DepthFormat::d24;
   d.lights.push_back(sun);

@@ -42,9 +42,15 @@ SceneDesc pyramid() {
 
   Light l = light("ceiling lamp", LightType::hemispherical, ShadowTechnique::pyramid);
   l.position = {0.0f, 3.6f, 0.0f};
+  l.intensity = 1000.0f;  // candela: about 75 lux on the floor below, a lit room
   l.direction = {0.0f, -1.0f, 0.0f};
   l.range = 12.0f;
   l.shadow.depth_format = DepthFormat::d24;
+  // Measured against the ray-cast reference (eval, 1280x720): the slope bias at 1024² left 120 false-shadowed
+  // and 105 false-lit pixels in runs of up to 12 at the furniture's contacts (the slope term grows where the
+  // pyramid's faces see the floor at grazing angles); a constant bias at 2048² leaves 56 and 44, runs of 3.
+  l.shadow.bias.mode = BiasMode::constant;
+  l.shadow.map_size = 2048;
   d.lights.push_back(l);
   return d;
 }
@@ -74,6 +80,7 @@ SceneDesc paraboloid() {
 
   Light l = light("lamp", LightType::point, ShadowTechnique::paraboloid);
   l.position = {0.0f, 2.5f, 0.0f};
+  l.intensity = 1000.0f;  // candela: 160 lux on the ground below
   l.range = 25.0f;
   l.shadow.depth_format = DepthFormat::d24;
   d.lights.push_back(l);

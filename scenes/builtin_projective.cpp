@@ -74,6 +74,7 @@ SceneDesc projective(double time, int figures) {
   d.cameras.push_back(camera("main", {0.0f, 9.0f, 16.0f}, {0.0f, 0.0f, -1.0f}, 50.0f, 0.5f, 100.0f));
 
   Light sun = light("sun", LightType::directional, ShadowTechnique::projective);
+  sun.intensity = 100000.0f;  // lux: a clear-day sun
   sun.direction = -glm::vec3(0.6f, 1.2f, 0.5f);
   sun.shadow.map_size = 256;  // per caster
   sun.shadow.bias.mode = BiasMode::none;

@@ -19,10 +19,12 @@ SceneDesc tutorial(bool spot) {
   Light l;
   if (!spot) {
     l = light("sun", LightType::directional, ShadowTechnique::shadowmap);
+    l.intensity = 100000.0f;  // lux: a clear-day sun
     l.direction = -glm::vec3(0.5f, 2.0f, 2.0f);  // travels from the light: the light is towards (0.5, 2, 2)
   } else {
     l = light("spot", LightType::spot, ShadowTechnique::shadowmap);
     l.position = {5.0f, 20.0f, 20.0f};
+    l.intensity = 400000.0f;  // candela: a stadium floodlight, about 510 lux on the floor 28 m away
     l.direction = -glm::vec3(0.5f, 2.0f, 2.0f);  // the axis passes through the origin
     l.inner_cone_deg = 17.5f;
     l.outer_cone_deg = 22.5f;                    // the tutorial's 45° perspective frustum
@@ -36,6 +38,12 @@ SceneDesc tutorial(bool spot) {
     // 345 false-lit pixels along the right wall's floor joint and under the sphere (runs of 16); front faces
     // and 2048² leave 20, none longer than a pixel, with no more acne (20 false-shadowed against 22).
     l.shadow.cull_front = false;
+    l.shadow.map_size = 2048;
+  } else {
+    // The spot's map is perspective: near the light's axis a texel spans more of the floor than the sun's, and
+    // with front faces the slope bias leaves acne (eval, 1280x720: 12,671 false-shadowed pixels at 1024², 303 at
+    // 2048²). Back faces keep it out, and 2048² narrows the leak at the contacts: 13 false-shadowed and 23
+    // false-lit pixels (runs of at most 3), against 23 and 38 (runs of 4) at 1024².
     l.shadow.map_size = 2048;
   }
   d.lights.push_back(l);

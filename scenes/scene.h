@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scenes/look.h"
 #include "scenes/shadow_settings.h"
 
 namespace scenes {
@@ -101,7 +102,8 @@ struct Light {
   std::string name;
   LightType type = LightType::directional;
   glm::vec3 color{1.0f};
-  float intensity = 1.0f;
+  float intensity = 1.0f;                     // glTF KHR_lights_punctual units: candela (spot, point,
+                                              // hemispherical) or lux (directional)
   glm::vec3 position{0.0f};                   // spot, point, hemispherical
   glm::vec3 direction{0.0f, -1.0f, 0.0f};     // directional, spot, hemispherical (the way it faces)
   float inner_cone_deg = 20.0f;               // spot: half-angles from the axis, degrees
@@ -124,6 +126,7 @@ struct Scene {
   std::vector<std::string> objects;
   std::vector<Camera> cameras;   // the first is the default view
   std::vector<Light> lights;
+  Look look;                     // exposure, tone map and background
   std::vector<std::string> warnings;  // repairs made while loading (e.g. non-finite normals replaced)
   bool operator==(const Scene&) const = default;
 };

@@ -44,6 +44,7 @@ class Builder {
   Scene run() {
     out_.name = desc_.name;
     out_.description = desc_.description;
+    out_.look = desc_.look;
     for (const Material& m : desc_.materials) {
       Material copy = m;
       if (!copy.texture.empty()) copy.texture = resolve(copy.texture).generic_string();

@@ -111,6 +111,7 @@ struct SceneDesc {
   std::vector<ObjectDesc> objects;
   std::vector<Camera> cameras;
   std::vector<Light> lights;         // directions as written; range 0: reach the whole scene
+  Look look;                         // exposure, tone map and background
   bool operator==(const SceneDesc&) const = default;
 };
 

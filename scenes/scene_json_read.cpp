@@ -202,6 +202,55 @@ Light read_light(const JsonIn& j) {
   return l;
 }
 
+// A colour of the background: three numbers in [0, 1].
+glm::vec3 background_color(const JsonIn& j) {
+  const glm::vec3 c = j.vec3();
+  if (!(glm::all(glm::greaterThanEqual(c, glm::vec3(0.0f))) && glm::all(glm::lessThanEqual(c, glm::vec3(1.0f)))))
+    j.fail("expected three numbers in [0, 1] (linear RGB)");
+  return c;
+}
+
+// `exposure` (EV100 or "auto"), `tonemap` (a name) and `background` (a name, a colour or {"top", "bottom"}).
+Look read_look(const JsonIn& root) {
+  Look look;
+  if (auto e = root.optional("exposure")) {
+    if (e->value().is_string()) {
+      if (e->string() != "auto") e->fail("expected a number (EV100) or \"auto\"");
+    } else {
+      const float ev = e->number();
+      if (!(ev >= -64.0f && ev <= 64.0f)) e->fail("EV100 must be between -64 and 64");
+      look.exposure.ev100 = ev;
+    }
+  }
+  if (auto t = root.optional("tonemap")) {
+    const std::string name = t->string();
+    if (auto op = shading::parse_tone_map(name)) look.tone_map = *op;
+    else {
+      std::string known;
+      for (const shading::ToneMapName& n : shading::kToneMapNames) known += (known.empty() ? "" : ", ") + std::string(n.name);
+      t->fail("unknown tone map '" + name + "' (known: " + known + ")");
+    }
+  }
+  if (auto b = root.optional("background")) {
+    if (b->value().is_string()) {
+      const std::string name = b->string();
+      if (auto named = named_background(name)) look.background = *named;
+      else {
+        std::string known;
+        for (const NamedBackground& n : kBackgrounds) known += (known.empty() ? "" : ", ") + std::string(n.name);
+        b->fail("unknown background '" + name + "' (known: " + known + ", or [r, g, b], or {\"top\", \"bottom\"})");
+      }
+    } else if (b->value().is_array()) {
+      look.background.top = look.background.bottom = background_color(*b);
+    } else {
+      b->allow_only({"top", "bottom"}, "background");
+      look.background.top = background_color(b->member("top"));
+      look.background.bottom = background_color(b->member("bottom"));
+    }
+  }
+  return look;
+}
+
 }  // namespace
 
 SceneDesc parse_scene_json(std::string_view text, const std::string& file) {
@@ -215,7 +264,8 @@ SceneDesc parse_scene_json(std::string_view text, const std::string& file) {
     throw SceneError(file, "", "malformed JSON: " + what);
   }
   const JsonIn root(doc, "", file);
-  root.allow_only({"version", "name", "description", "materials", "objects", "cameras", "lights"});
+  root.allow_only({"version", "name", "description", "materials", "objects", "cameras", "lights", "exposure",
+                   "tonemap", "background"});
   if (auto v = root.optional("version"))
     if (v->integer(0, 1000) != kSceneFormatVersion) v->fail("unsupported version (this reader knows version 1)");
   SceneDesc d;
@@ -233,6 +283,7 @@ SceneDesc parse_scene_json(std::string_view text, const std::string& file) {
     for (const JsonIn& e : c->items()) d.cameras.push_back(read_camera(e));
   if (auto l = root.optional("lights"))
     for (const JsonIn& e : l->items()) d.lights.push_back(read_light(e));
+  d.look = read_look(root);
   return d;
 }
 

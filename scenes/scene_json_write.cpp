@@ -209,6 +209,13 @@ Json light_json(const Light& l) {
   return j;
 }
 
+Json background_json(const Background& b) {
+  for (const NamedBackground& n : kBackgrounds)
+    if (n.background == b) return std::string(n.name);
+  if (b.top == b.bottom) return vec(b.top);
+  return Json{{"top", vec(b.top)}, {"bottom", vec(b.bottom)}};
+}
+
 // Two-space indented JSON with arrays of numbers and strings kept on one line (twelve items per line when long),
 // so vectors and matrices read as they are meant.
 void pretty(const Json& v, int indent, std::string& out) {
@@ -256,6 +263,9 @@ std::string scene_json_text(const SceneDesc& d) {
   j["objects"] = array_of(d.objects, object_json);
   if (!d.cameras.empty()) j["cameras"] = array_of(d.cameras, camera_json);
   if (!d.lights.empty()) j["lights"] = array_of(d.lights, light_json);
+  j["exposure"] = d.look.exposure.ev100 ? Json(exact(*d.look.exposure.ev100)) : Json("auto");
+  j["tonemap"] = std::string(shading::tone_map_name(d.look.tone_map));
+  j["background"] = background_json(d.look.background);
   std::string out;
   pretty(j, 0, out);
   return out + "\n";

@@ -57,6 +57,7 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
     const float el = options.sun ? options.sun->y : kStageSunElevation;
     Light sun;
     sun.name = "sun";
+    sun.intensity = 100000.0f;  // lux: a clear-day sun
     sun.direction = sun_direction(az, el);
     sun.shadow = default_shadow_settings(LightType::directional);
     desc.lights.push_back(sun);
@@ -72,6 +73,13 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
       ground.source = Shape{PlaneShape{glm::vec2(side), 1}};
       ground.transform.translate = glm::vec3(centre.x, bounds.min.y, centre.z);  // the model stands on it
       ground.casts_shadows = false;
+      // A mid-grey matte ground (albedo 0.5, as concrete): white would outshine the model under the sun.
+      Material matte;
+      matte.name = "stage ground";
+      matte.base_color = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+      matte.specular_strength = 0.05f;
+      desc.materials.push_back(matte);
+      ground.material = matte.name;
       desc.objects.push_back(ground);
       std::snprintf(line, sizeof line, "added a %.3g m ground plane at y = %.3g under it (--no-ground)", double(side),
                     double(bounds.min.y));

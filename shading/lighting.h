@@ -1,10 +1,15 @@
-// The shading model of the shadow demos, in one place: ambient + Lambert diffuse + Blinn-Phong specular, one
-// light with colour and power, attenuated by distance (inverse square, windowed to the light's range) and by a
-// spot cone with inner and outer angles. The shadow term scales only the direct light, never the ambient.
+// The shading model of the shadow demos, in one place, in glTF KHR_lights_punctual units: a light's intensity is
+// in candela (point, spot) or lux (directional); what the camera pass computes is luminance (cd/m²), which the
+// frame's exposure and tone map (tone_map.h) turn into a picture. Lambert diffuse + Blinn-Phong specular, both
+// divided by π (a white Lambertian surface facing E lux has luminance E / π), attenuated by distance (inverse
+// square with glTF's range window) and by the spot cone (glTF's recommended falloff), plus an ambient term: a
+// fraction of the light's illuminance taken as arriving from every direction (no cone, no n·l, no shadow). The
+// shadow term scales only the direct light, never the ambient.
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -19,7 +24,7 @@ struct Light {
   glm::vec3 position{0.0f};                // point and spot
   glm::vec3 direction{0.0f, -1.0f, 0.0f};  // where the light points (directional and spot), normalised
   glm::vec3 color{1.0f};
-  float power = 1.0f;        // intensity multiplier: at 1 m from a point or spot light, radiance = colour · power
+  float intensity = 1.0f;    // candela (point, spot: illuminance I / d² at d metres) or lux (directional)
   float range = 0.0f;        // distance where the light has faded to 0; 0 means unlimited
   float inner_angle = 0.5f;  // spot: full intensity inside this half-angle
   float outer_angle = 0.6f;  // spot: no light beyond this half-angle
@@ -27,13 +32,16 @@ struct Light {
 
 struct Material {
   glm::vec3 albedo{0.8f};
-  float ambient = 0.1f;     // fraction of the albedo lit by ambient light
+  float ambient = 0.1f;     // fraction of each light's illuminance that reaches the point from everywhere
   float specular = 0.25f;   // Blinn-Phong specular strength (white highlights)
   float shininess = 32.0f;  // Blinn-Phong exponent
 };
 
-// Distance attenuation: 1 / max(d², 0.01²) (inverse square, capped at 1 cm so it stays finite) times the range
-// window (1 − (d / range)⁴)² clamped to [0, 1], which reaches 0 smoothly at `range`; range 0: no window.
+inline constexpr float kInvPi = std::numbers::inv_pi_v<float>;
+
+// Distance attenuation, glTF's recommended one: 1 / max(d², 0.01²) (inverse square, capped at 1 cm so it stays
+// finite) times the range window (1 − (d / range)⁴)² clamped to [0, 1], which reaches 0 smoothly at `range`;
+// range 0: no window.
 inline float distance_attenuation(float d, float range) {
   const float inv_sq = 1.0f / std::max(d * d, 1e-4f);
   if (range <= 0.0f) return inv_sq;
@@ -42,67 +50,77 @@ inline float distance_attenuation(float d, float range) {
   return inv_sq * w * w;
 }
 
-// Spot cone: 1 inside the inner angle, 0 beyond the outer one, smoothstep between (in cos angle).
-// `cos_angle` is the cosine of the angle between the spot direction and the direction to the lit point.
+// Spot cone, glTF's recommended falloff: t = clamp((cos − cos outer) / (cos inner − cos outer), 0, 1), then t².
+// 1 inside the inner angle, 0 beyond the outer one. `cos_angle` is the cosine of the angle between the spot
+// direction and the direction to the lit point.
 inline float spot_attenuation(float cos_angle, float inner_angle, float outer_angle) {
   const float ci = std::cos(inner_angle), co = std::cos(outer_angle);
   if (ci <= co) return cos_angle >= co ? 1.0f : 0.0f;  // degenerate cone: a hard edge
-  const float x = std::clamp((cos_angle - co) / (ci - co), 0.0f, 1.0f);
-  return x * x * (3.0f - 2.0f * x);
+  const float t = std::clamp((cos_angle - co) / (ci - co), 0.0f, 1.0f);
+  return t * t;
 }
 
-// The light reaching point p: unit direction towards the light (L) and radiance (colour · power · attenuation).
+// The light reaching point p: unit direction towards the light (L), the illuminance on a surface facing the light
+// (colour · intensity · distance and cone attenuation, lux) and the illuminance without the cone (the ambient's).
 struct LightSample {
   glm::vec3 to_light{0.0f, 1.0f, 0.0f};
-  glm::vec3 radiance{0.0f};
+  glm::vec3 illuminance{0.0f};
+  glm::vec3 ambient{0.0f};
 };
 
 inline LightSample sample_light(const Light& light, glm::vec3 p) {
   LightSample s;
   if (light.type == LightType::directional) {
     s.to_light = -light.direction;
-    s.radiance = light.color * light.power;
+    s.illuminance = s.ambient = light.color * light.intensity;
     return s;
   }
   const glm::vec3 d = light.position - p;
   const float dist = glm::length(d);
   s.to_light = dist > 0.0f ? d / dist : glm::vec3(0.0f, 1.0f, 0.0f);
-  float att = distance_attenuation(dist, light.range);
+  const float att = light.intensity * distance_attenuation(dist, light.range);
+  s.ambient = light.color * att;
+  float cone = 1.0f;
   if (light.type == LightType::spot)
-    att *= spot_attenuation(glm::dot(-s.to_light, light.direction), light.inner_angle, light.outer_angle);
-  s.radiance = light.color * (light.power * att);
+    cone = spot_attenuation(glm::dot(-s.to_light, light.direction), light.inner_angle, light.outer_angle);
+  s.illuminance = light.color * (att * cone);
   return s;
 }
 
-// Diffuse and specular of one light at a point, before the shadow term.
+// Diffuse and specular luminance of one light at a point, before the shadow term.
 struct DirectLight {
   glm::vec3 diffuse{0.0f};
   glm::vec3 specular{0.0f};
 };
 
-// n: unit surface normal, v: unit direction from the point towards the eye. Lambert: albedo · max(n·l, 0);
-// Blinn-Phong: specular · max(n·h, 0)^shininess with h = normalize(l + v), only where n·l > 0.
+// n: unit surface normal, v: unit direction from the point towards the eye. Lambert: albedo / π · E · max(n·l, 0);
+// Blinn-Phong: E / π · specular · max(n·h, 0)^shininess with h = normalize(l + v), only where n·l > 0.
 inline DirectLight direct_light(const Material& m, const LightSample& light, glm::vec3 n, glm::vec3 v) {
   DirectLight out;
   const float ndotl = glm::dot(n, light.to_light);
   if (ndotl <= 0.0f) return out;
-  out.diffuse = m.albedo * light.radiance * ndotl;
+  out.diffuse = m.albedo * light.illuminance * (ndotl * kInvPi);
   const glm::vec3 hv = light.to_light + v;
   const float len = glm::length(hv);
   if (len > 0.0f) {
     const float ndoth = std::max(glm::dot(n, hv / len), 0.0f);
-    out.specular = light.radiance * (m.specular * std::pow(ndoth, m.shininess));
+    out.specular = light.illuminance * (m.specular * std::pow(ndoth, m.shininess) * kInvPi);
   }
   return out;
 }
 
-// The final colour: ambient (albedo · ambient · light colour) + shadow · (diffuse + specular). `shadow` is the
-// visibility a shadow lookup returns: 1 lit, 0 in shadow.
+// The ambient luminance one light adds: albedo / π · ambient · its illuminance without the cone.
+inline glm::vec3 ambient_light(const Material& m, const LightSample& light) {
+  return m.albedo * light.ambient * (m.ambient * kInvPi);
+}
+
+// The luminance of a point: ambient + shadow · (diffuse + specular). `shadow` is the visibility a shadow lookup
+// returns: 1 lit, 0 in shadow.
 inline glm::vec3 shade(const Material& m, const Light& light, glm::vec3 p, glm::vec3 n, glm::vec3 eye, float shadow) {
   const LightSample ls = sample_light(light, p);
   const glm::vec3 v = glm::normalize(eye - p);
   const DirectLight d = direct_light(m, ls, n, v);
-  return m.albedo * light.color * m.ambient + shadow * (d.diffuse + d.specular);
+  return ambient_light(m, ls) + shadow * (d.diffuse + d.specular);
 }
 
 }  // namespace shading

@@ -1,6 +1,7 @@
 // The camera pass's shader: world position and normal as perspective-correct varyings, Blinn-Phong per light
 // (shading/lighting.h) with the ambient term untouched and diffuse + specular scaled by the light's shadow
-// visibility. Each light is read through its technique's LightShadow with its own filter, once per quad
+// visibility. It writes luminance (cd/m², float) with alpha 1 where a surface is drawn; the frame's exposure and
+// tone map turn it into a picture (develop.h). Each light is read through its technique's LightShadow with its own filter, once per quad
 // (light_visibility) or, on the pipeline's wide path (fragment_pair), once per quad pair eight lanes wide.
 // Textured materials (BasicCameraShader<true, ...>) take their albedo from factor × texture per pixel
 // (shading/surface_texture.h) on the quad path, and masked ones discard where alpha is below the cutoff.
@@ -186,9 +187,9 @@ struct BasicCameraShader {
       for (size_t i = 0; i < pts.n; ++i) {
         shading::Material surface_material = u.material;
         surface_material.albedo = pts.albedo[i];  // the material's, or factor × texture
-        d[i] = shading::direct_light(surface_material, shading::sample_light(l.light, pts.q[i].p), pts.q[i].n,
-                                     pts.view[i]);
-        pts.color[i] += surface_material.albedo * l.light.color * surface_material.ambient;
+        const shading::LightSample ls = shading::sample_light(l.light, pts.q[i].p);
+        d[i] = shading::direct_light(surface_material, ls, pts.q[i].n, pts.view[i]);
+        pts.color[i] += shading::ambient_light(surface_material, ls);
         if (d[i].diffuse == glm::vec3(0.0f) && d[i].specular == glm::vec3(0.0f)) continue;
         lit_pts[m] = pts.q[i];
         lit_of[m++] = i;

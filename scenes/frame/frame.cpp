@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <variant>
@@ -15,6 +16,7 @@
 #include "scenes/camera_math.h"
 #include "scenes/frame/camera_shader.h"
 #include "scenes/frame/camera_surface.h"
+#include "scenes/frame/develop.h"
 #include "scenes/frame/frame_lights.h"
 #include "scenes/frame/projective_shaders.h"
 #include "scenes/io/scene_textures.h"
@@ -163,7 +165,11 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   if (!textures) textures = &own_textures.emplace(scenes::io::load_scene_textures(scene));
   const std::vector<shading::SurfaceTexture> surfaces = scenes::io::surface_textures(scene, *textures);
 
-  Frame frame{raster::ColorTarget(config.width, config.height, raster::ColorFormat::rgba8), {}, {}, {}, {}};
+  const float given_ev100 = config.exposure.value_or(scene.look.exposure).ev100.value_or(0.0f);
+  if (!std::isfinite(given_ev100) || std::abs(given_ev100) > 64.0f)
+    throw FrameError("exposure: EV100 " + std::to_string(given_ev100) + " is outside -64..64");
+  Frame frame{raster::ColorTarget(1, 1, raster::ColorFormat::rgba8, true),
+              raster::ColorTarget(config.width, config.height, raster::ColorFormat::rgba32f)};
 
   // ---- Shadow maps, light by light, through the registry.
   const auto t_shadow = Clock::now();
@@ -239,7 +245,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
 
   raster::DepthTarget depth(config.width, config.height, raster::DepthFormat::d24);
   depth.clear(1.0f);
-  frame.color.clear(config.clear_color);
+  frame.radiance.clear(glm::vec4(0.0f));  // alpha 0: the background shows
   std::vector<std::vector<CameraVertex>> mesh_vertices(scene.meshes.size());
   std::vector<std::vector<TexturedCameraVertex>> mesh_textured(scene.meshes.size());  // textured draws only
   frame.view_proj = view_proj;
@@ -261,7 +267,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
       const raster::DrawState s = camera_instance(scene, index, shader.u);  // as the surface pre-pass draws it
       // Drawn once, plus the projective maps overlapping it (projective_shaders.h).
       auto draw = [&](const auto& sh, const auto& vertices) {
-        return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.color}, s, sh, std::span(vertices),
+        return draw_receiver(renderer, raster::RenderTargets{&depth, &frame.radiance}, s, sh, std::span(vertices),
                              std::span<const uint32_t>(mesh.indices), frame.projective, index,
                              frame.surface ? &*frame.surface : nullptr);
       };
@@ -280,6 +286,12 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
       }
     }
   }
+  // ---- The picture: exposure, tone map, background, one sRGB encode.
+  const scenes::Exposure exposure = config.exposure.value_or(scene.look.exposure);
+  const shading::ToneMap tone_map = config.tone_map.value_or(scene.look.tone_map);
+  frame.ev100 = exposure.ev100 ? *exposure.ev100 : metered_ev100(frame.radiance, tone_map, renderer.pool());
+  frame.color = develop(frame.radiance, frame.ev100, tone_map, config.background.value_or(scene.look.background),
+                        renderer.pool());
   frame.stats.camera_ms = ms_since(t_camera);
   if (config.aliasing)
     frame.aliasing = measure_aliasing(scene, view_proj, records, mesh_vertices, depth, renderer);

@@ -1,5 +1,6 @@
 // A whole frame as a library call: every light's shadow through the technique registry
-// (shading/techniques/technique.h), then the camera pass with Blinn-Phong shading that reads them. The
+// (shading/techniques/technique.h), then the camera pass with Blinn-Phong shading that reads them, in float, then
+// the picture developed from it with the scene's exposure, tone map and background (develop.h). The
 // configuration is typed (the vocabulary's enums and numbers); map export to EXR is a separate step
 // (export_maps). `shadowlab render`, the golden-image tests and the frame benchmarks all call render_frame.
 #pragma once
@@ -21,6 +22,7 @@
 #include "scenes/frame/surface_record.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/scene_textures.h"
+#include "scenes/look.h"
 #include "scenes/scene.h"
 #include "shading/techniques/technique.h"
 
@@ -37,8 +39,11 @@ struct FrameError : std::invalid_argument {
 // What to render. The shadow fields override every light's own settings where set.
 struct FrameConfig {
   int width = 1280, height = 720;
-  size_t camera = 0;                              // index into Scene::cameras
-  glm::vec4 clear_color{0.0f, 0.0f, 0.4f, 1.0f};  // the tutorial's glClearColor (alpha 1)
+  size_t camera = 0;  // index into Scene::cameras
+  // How the frame is shown (scenes/look.h); unset: the scene's own.
+  std::optional<scenes::Exposure> exposure;
+  std::optional<shading::ToneMap> tone_map;
+  std::optional<scenes::Background> background;
 
   std::optional<tech::Technique> technique;
   std::optional<tech::FilterKind> filter;
@@ -77,7 +82,9 @@ struct LightResult {
 };
 
 struct Frame {
-  raster::ColorTarget color;        // linear RGBA8 (PNG writing encodes to sRGB)
+  raster::ColorTarget color;        // the picture: sRGB RGBA8, developed from `radiance` (develop.h)
+  raster::ColorTarget radiance;     // the camera pass: luminance in cd/m² (RGBA32F), alpha 1 where drawn
+  float ev100 = 0.0f;               // the exposure the picture was developed with (given or metered)
   std::vector<LightResult> lights;  // per scene light
   ProjectiveFrame projective;       // the per-caster projective maps
   FrameStats stats;

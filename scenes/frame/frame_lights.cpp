@@ -31,7 +31,7 @@ shading::Light lighting_light(const scenes::Light& l) {
   s.position = l.position;
   s.direction = glm::normalize(l.direction);
   s.color = l.color;
-  s.power = l.intensity;
+  s.intensity = l.intensity;
   s.range = l.range;
   s.inner_angle = glm::radians(l.inner_cone_deg);
   s.outer_angle = glm::radians(l.outer_cone_deg);

@@ -5,8 +5,8 @@
 //                texgen with clamped coordinates, and multiplicative blending (GL's DST_COLOR, ZERO), scissored
 //                to the window rectangle the caster's shadow can reach on the receiver;
 //   single-pass: SinglePassShader<Base>: Base's shading and up to N maps multiplied in one fragment shader,
-//                each stage at the frame buffer's 8-bit precision (as the multi-stage combiners of the time),
-//                so it reproduces the multipass image exactly; overlaps beyond N fall back to extra passes.
+//                one float product per map in the blend's order, so it reproduces the multipass image on the
+//                frame's float target exactly; overlaps beyond N fall back to extra passes.
 // A receiver that overlaps no caster is drawn once, with Base alone. With a SurfaceRecord, both ways multiply
 // each map's factor into the record's visibility of the caster's light at the pixels they draw (the depth test
 // runs before the fragment shader, so these are exactly the pixels the blend darkens).
@@ -68,15 +68,13 @@ struct SinglePassShader {
   glm::vec4 vertex(const Vertex& v, Varyings& out) const { return base.vertex(v, out); }
   void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const {
     base.fragment(q, out);
-    using shading::tech::unorm8;
-    for (glm::vec4& c : out.color) c = glm::vec4(unorm8(c.r), unorm8(c.g), unorm8(c.b), unorm8(c.a));
     const shading::Quad<glm::vec3> p = world_positions(q);
     for (int i = 0; i < count; ++i) {
       const shading::Quad<float> f = shading::tech::projective_factors(*readers[size_t(i)], p);
       if (record) record_factors(*record, q, f, light_of[size_t(i)]);
       for (size_t l = 0; l < 4; ++l) {
         glm::vec4& c = out.color[l];
-        c = glm::vec4(unorm8(f[l] * c.r), unorm8(f[l] * c.g), unorm8(f[l] * c.b), unorm8(1.0f * c.a));
+        c = glm::vec4(f[l] * c.r, f[l] * c.g, f[l] * c.b, 1.0f * c.a);
       }
     }
   }

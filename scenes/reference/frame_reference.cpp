@@ -15,7 +15,7 @@ FrameReference reference_for(const scenes::Scene& scene, frame::FrameConfig conf
   if (!textures) textures = &own.emplace(scenes::io::load_scene_textures(scene));
   frame::FrameConfig off;
   off.width = config.width, off.height = config.height, off.camera = config.camera;
-  off.clear_color = config.clear_color;
+  off.exposure = config.exposure, off.tone_map = config.tone_map, off.background = config.background;
   off.technique = shading::tech::Technique::none;
   off.surface_record = true;
   off.export_maps = false;

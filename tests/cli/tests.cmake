@@ -10,6 +10,7 @@ if(TARGET shadowlab)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/full_disk_test.cpp)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/kill_test.cpp)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/material_cli_test.cpp)
+  list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/look_cli_test.cpp)
   list(APPEND SHADOWLAB_TEST_DEFINITIONS SHADOWLAB_CLI="$<TARGET_FILE:shadowlab>")
   find_package(nlohmann_json CONFIG REQUIRED)
   # valijson (Debian libvalijson-dev, header-only) checks the --json documents against docs/cli/*.schema.json.

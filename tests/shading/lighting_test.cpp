@@ -1,4 +1,5 @@
-// The demo shading model: Lambert, Blinn-Phong, distance and spot attenuation, ambient untouched by shadow.
+// The demo shading model in glTF units: Lambert and Blinn-Phong over π, distance and spot attenuation as glTF
+// recommends, ambient untouched by shadow.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,20 +21,22 @@ TEST(Lighting, DistanceAttenuationIsInverseSquareWindowedByRange) {
   EXPECT_EQ(shading::distance_attenuation(0.0f, 0.0f), 1e4f);  // capped at 1 cm
 }
 
-TEST(Lighting, SpotConeIsOneInsideZeroOutsideSmoothBetween) {
+TEST(Lighting, SpotConeIsGltfsSquaredFalloff) {
   const float inner = 0.3f, outer = 0.5f;
   EXPECT_EQ(shading::spot_attenuation(std::cos(0.1f), inner, outer), 1.0f);
   EXPECT_EQ(shading::spot_attenuation(std::cos(0.6f), inner, outer), 0.0f);
-  const float mid = 0.5f * (std::cos(inner) + std::cos(outer));  // halfway in cosine: smoothstep(½) = ½
-  EXPECT_NEAR(shading::spot_attenuation(mid, inner, outer), 0.5f, 1e-6f);
+  const float mid = 0.5f * (std::cos(inner) + std::cos(outer));  // halfway in cosine: t = ½, t² = ¼
+  EXPECT_NEAR(shading::spot_attenuation(mid, inner, outer), 0.25f, 1e-6f);
 }
 
-TEST(Lighting, LambertAndBlinnPhong) {
+// Units: a white Lambertian surface facing E lux has luminance E / π.
+TEST(Lighting, LambertAndBlinnPhongInPhotometricUnits) {
+  constexpr float kPi = 3.14159265358979f;
   Light sun;
   sun.type = LightType::directional;
   sun.direction = {0.0f, -1.0f, 0.0f};
   sun.color = {1.0f, 0.5f, 0.25f};
-  sun.power = 2.0f;
+  sun.intensity = 2.0f;  // lux
   Material m;
   m.albedo = {0.5f, 0.5f, 0.5f};
   m.specular = 0.25f;
@@ -41,18 +44,19 @@ TEST(Lighting, LambertAndBlinnPhong) {
   const glm::vec3 n(0, 1, 0);
   const auto ls = shading::sample_light(sun, glm::vec3(0));
   EXPECT_EQ(ls.to_light, glm::vec3(0, 1, 0));
-  EXPECT_EQ(ls.radiance, glm::vec3(2.0f, 1.0f, 0.5f));
-  // Viewed along the light: h = n, n·h = 1: specular = 0.25 · radiance.
+  EXPECT_EQ(ls.illuminance, glm::vec3(2.0f, 1.0f, 0.5f));
+  // Viewed along the light: h = n, n·h = 1: specular = 0.25 · E / π.
   auto d = shading::direct_light(m, ls, n, glm::vec3(0, 1, 0));
-  EXPECT_EQ(d.diffuse, glm::vec3(1.0f, 0.5f, 0.25f));
-  EXPECT_EQ(d.specular, glm::vec3(0.5f, 0.25f, 0.125f));
+  EXPECT_NEAR(d.diffuse.x, 0.5f * 2.0f / kPi, 1e-6f);
+  EXPECT_NEAR(d.diffuse.z, 0.5f * 0.5f / kPi, 1e-6f);
+  EXPECT_NEAR(d.specular.x, 0.25f * 2.0f / kPi, 1e-6f);
   // Light at 60° from the normal: Lambert halves.
   Light tilted = sun;
   tilted.direction = glm::normalize(glm::vec3(-std::sqrt(3.0f), -1.0f, 0.0f));
   d = shading::direct_light(m, shading::sample_light(tilted, glm::vec3(0)), n, glm::vec3(0, 1, 0));
-  EXPECT_NEAR(d.diffuse.x, 0.5f, 1e-6f);
-  // n·h for h halfway between l (60° off) and v (along n): cos 30°; specular 0.25 · 2 · cos(30°)⁸.
-  EXPECT_NEAR(d.specular.x, 0.25f * 2.0f * std::pow(std::cos(0.5236f), 8.0f), 1e-4f);
+  EXPECT_NEAR(d.diffuse.x, 0.5f / kPi, 1e-6f);
+  // n·h for h halfway between l (60° off) and v (along n): cos 30°; specular 0.25 · 2 · cos(30°)⁸ / π.
+  EXPECT_NEAR(d.specular.x, 0.25f * 2.0f * std::pow(std::cos(0.5236f), 8.0f) / kPi, 1e-4f);
   // Light from behind: nothing.
   Light under = sun;
   under.direction = {0.0f, 1.0f, 0.0f};
@@ -61,13 +65,14 @@ TEST(Lighting, LambertAndBlinnPhong) {
   EXPECT_EQ(d.specular, glm::vec3(0));
 }
 
-TEST(Lighting, SpotLightAndShadowScaleOnlyTheDirectLight) {
+TEST(Lighting, SpotInCandelaAndShadowScaleOnlyTheDirectLight) {
+  constexpr float kPi = 3.14159265358979f;
   Light spot;
   spot.type = LightType::spot;
   spot.position = {0.0f, 2.0f, 0.0f};
   spot.direction = {0.0f, -1.0f, 0.0f};
   spot.color = glm::vec3(1.0f);
-  spot.power = 4.0f;
+  spot.intensity = 4.0f;  // candela
   spot.inner_angle = 0.4f;
   spot.outer_angle = 0.5f;
   Material m;
@@ -75,11 +80,12 @@ TEST(Lighting, SpotLightAndShadowScaleOnlyTheDirectLight) {
   m.ambient = 0.1f;
   m.specular = 0.0f;
   const glm::vec3 n(0, 1, 0), eye(0, 2, 0);
-  // Straight below at 2 m: 4 / 2² = 1.
-  EXPECT_EQ(shading::shade(m, spot, glm::vec3(0), n, eye, 1.0f), glm::vec3(1.1f));
-  EXPECT_EQ(shading::shade(m, spot, glm::vec3(0), n, eye, 0.0f), glm::vec3(0.1f));
-  // Outside the cone (45° off axis): ambient only.
-  EXPECT_EQ(shading::shade(m, spot, glm::vec3(2.0f, 0.0f, 0.0f), n, eye, 1.0f), glm::vec3(0.1f));
+  // Straight below at 2 m: 4 cd / (2 m)² = 1 lux; luminance (1 + 0.1) / π lit, 0.1 / π in shadow.
+  const glm::vec3 lit = shading::shade(m, spot, glm::vec3(0), n, eye, 1.0f);
+  EXPECT_NEAR(lit.x, 1.1f / kPi, 1e-6f);
+  EXPECT_NEAR(shading::shade(m, spot, glm::vec3(0), n, eye, 0.0f).x, 0.1f / kPi, 1e-6f);
+  // Outside the cone (45° off axis, 2√2 m away): the ambient of 4 / 8 = ½ lux, no direct light.
+  EXPECT_NEAR(shading::shade(m, spot, glm::vec3(2.0f, 0.0f, 0.0f), n, eye, 1.0f).x, 0.1f * 0.5f / kPi, 1e-6f);
 }
 
 }  // namespace

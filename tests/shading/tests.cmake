@@ -11,6 +11,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   shading/shadow_lookup_test.cpp
   shading/texel_format_test.cpp
   shading/texture_test.cpp
+  shading/tone_map_test.cpp
   shading/wrap_test.cpp
 )
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::shading)

@@ -81,7 +81,10 @@ TEST(RegistryWalk, EveryClaimedLightTypeRenders) {
   frame::FrameConfig config;
   config.width = 96, config.height = 54;
   for (tech::LightType type : kLightTypes) {
+    config.exposure.reset();
     const frame::Frame unshadowed = frame::render_frame(with_technique(type, tech::Technique::none), config, renderer);
+    // The unshadowed frame's metered exposure for both: metering each would move every pixel with the shadow.
+    config.exposure = scenes::Exposure{unshadowed.ev100};
     for (const tech::TechniqueInfo& t : tech::kTechniques) {
       if (!t.built || !tech::supports(t.id, type) || t.id == tech::Technique::none) continue;
       SCOPED_TRACE(std::string(t.name) + " on a " + std::string(tech::to_string(type)) + " light");

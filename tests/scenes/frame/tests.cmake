@@ -7,5 +7,6 @@ list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/builtin_render_test
      ${CMAKE_CURRENT_LIST_DIR}/projective_frame_test.cpp
      ${CMAKE_CURRENT_LIST_DIR}/registry_walk_test.cpp
      ${CMAKE_CURRENT_LIST_DIR}/bad_geometry_test.cpp
-     ${CMAKE_CURRENT_LIST_DIR}/material_frame_test.cpp)
+     ${CMAKE_CURRENT_LIST_DIR}/material_frame_test.cpp
+     ${CMAKE_CURRENT_LIST_DIR}/develop_test.cpp)
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::frame OpenImageIO::OpenImageIO)

@@ -1,0 +1,140 @@
+// The picture developed from the camera pass's luminance (scenes/frame/develop.h): metering, the background, and
+// no banding: shading runs in float and is encoded to 8-bit sRGB once, so a smooth gradient steps by at most one
+// code between neighbouring pixels (a frame shaded into a linear 8-bit buffer steps by up to 13 codes in the dark).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "raster/formats.h"
+#include "scenes/frame/develop.h"
+#include "scenes/frame/frame.h"
+#include "tests/support.h"
+
+namespace {
+
+raster::ColorTarget uniform(int w, int h, glm::vec4 c) {
+  raster::ColorTarget t(w, h, raster::ColorFormat::rgba32f);
+  t.clear(c);
+  return t;
+}
+
+// A 40 m square of floor seen straight from above (orthographic, filling the frame) under a point light 30 m
+// over its centre: illuminance falls smoothly from the centre to 85 % at the corners. No shadows, no specular.
+scenes::Scene gradient_scene() {
+  scenes::Scene s;
+  scenes::Mesh m;
+  m.positions = {{-20, 0, -20}, {20, 0, -20}, {20, 0, 20}, {-20, 0, 20}};
+  m.normals.assign(4, glm::vec3(0, 1, 0));
+  m.indices = {0, 2, 1, 0, 3, 2};
+  s.meshes.push_back(m);
+  scenes::Material mat;
+  mat.base_color = glm::vec4(0.8f, 0.7f, 0.6f, 1.0f);
+  mat.specular_strength = 0.0f;
+  s.materials.push_back(mat);
+  s.instances.push_back(scenes::Instance{});
+  s.objects.push_back("floor");
+  scenes::Camera cam;
+  cam.position = {0, 50, 0};
+  cam.target = {0, 0, 0};
+  cam.up = {0, 0, -1};
+  cam.projection = scenes::Orthographic{-16.0f, 16.0f, -9.0f, 9.0f, 1.0f, 100.0f};
+  s.cameras.push_back(cam);
+  scenes::Light lamp;
+  lamp.type = scenes::LightType::point;
+  lamp.position = {0, 30, 0};
+  lamp.intensity = 1000.0f;
+  lamp.shadow.technique = scenes::ShadowTechnique::none;
+  s.lights.push_back(lamp);
+  return s;
+}
+
+// The largest difference of one channel between horizontally or vertically neighbouring pixels, and the range of
+// the green channel over the frame.
+struct Steps {
+  int largest = 0;
+  int span = 0;
+};
+Steps steps(const raster::ColorTarget& c) {
+  Steps s;
+  int lo = 255, hi = 0;
+  for (int y = 0; y < c.height(); ++y)
+    for (int x = 0; x < c.width(); ++x) {
+      const uint8_t* p = c.row8(y) + size_t(x) * 4;
+      lo = std::min(lo, int(p[1])), hi = std::max(hi, int(p[1]));
+      for (int ch = 0; ch < 3; ++ch) {
+        if (x + 1 < c.width()) s.largest = std::max(s.largest, std::abs(int(p[ch]) - int(p[4 + ch])));
+        if (y + 1 < c.height()) s.largest = std::max(s.largest, std::abs(int(p[ch]) - int(c.row8(y + 1)[size_t(x) * 4 + size_t(ch)])));
+      }
+    }
+  s.span = hi - lo;
+  return s;
+}
+
+}  // namespace
+
+TEST(Develop, MeteringTakesTheLogAverageToMiddleGrey) {
+  raster::ThreadPool pool(testsupport::test_threads());
+  // Uniform 100 cd/m²: the log average and the 99th percentile are both 100; middle grey wins.
+  const raster::ColorTarget t = uniform(8, 8, glm::vec4(100.0f, 100.0f, 100.0f, 1.0f));
+  const float ev = frame::metered_ev100(t, shading::ToneMap::clamp, pool);
+  EXPECT_NEAR(double(shading::exposure_scale(ev)) * 100.0, 0.18, 1e-5);
+  // Undrawn pixels (alpha 0) and unlit ones do not count; nothing lit: EV100 0.
+  EXPECT_EQ(frame::metered_ev100(uniform(4, 4, glm::vec4(5.0f, 5.0f, 5.0f, 0.0f)), shading::ToneMap::clamp, pool), 0.0f);
+  EXPECT_EQ(frame::metered_ev100(uniform(4, 4, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)), shading::ToneMap::clamp, pool), 0.0f);
+}
+
+TEST(Develop, MeteringKeepsTheBrightestPercentUnderOne) {
+  raster::ThreadPool pool(testsupport::test_threads());
+  // Half the pixels at 1, half at 10000: the log average (100) would put the bright half at 18; the 99th
+  // percentile caps it where the tone map shows 95 % of white: 0.95 for clamp, more for the curves.
+  raster::ColorTarget t = uniform(10, 10, glm::vec4(1.0f, 1.0f, 1.0f, 1.0f));
+  for (int y = 0; y < 5; ++y)
+    for (int x = 0; x < 10; ++x) t.write(x, y, glm::vec4(10000.0f, 10000.0f, 10000.0f, 1.0f));
+  for (const shading::ToneMap m : {shading::ToneMap::clamp, shading::ToneMap::neutral, shading::ToneMap::aces}) {
+    const double exposed = double(shading::exposure_scale(frame::metered_ev100(t, m, pool))) * 10000.0;
+    EXPECT_NEAR(exposed, double(frame::highlight_limit(m)), 1e-3 * exposed);
+    EXPECT_NEAR(shading::tone_map(glm::vec3(float(exposed)), m).g, 0.95f, 1e-3f);
+  }
+  EXPECT_NEAR(frame::highlight_limit(shading::ToneMap::clamp), 0.95f, 1e-5f);
+  EXPECT_GT(frame::highlight_limit(shading::ToneMap::neutral), 1.5f);
+}
+
+TEST(Develop, BackgroundWhereNothingWasDrawnIsShownAsGiven) {
+  raster::ThreadPool pool(testsupport::test_threads());
+  raster::ColorTarget r = uniform(4, 3, glm::vec4(0.0f));
+  r.write(1, 1, glm::vec4(1.2f, 1.2f, 1.2f, 1.0f));  // EV100 0 saturates at 1.2: exposed 1, clamp: white
+  const scenes::Background b{{0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f}};
+  const raster::ColorTarget c = frame::develop(r, 0.0f, shading::ToneMap::clamp, b, pool);
+  ASSERT_TRUE(c.srgb());
+  auto px = [&](int x, int y) {
+    const uint8_t* p = c.row8(y) + size_t(x) * 4;
+    return glm::ivec4(p[0], p[1], p[2], p[3]);
+  };
+  EXPECT_EQ(px(0, 0), glm::ivec4(255, 0, 0, 255));  // bottom row: `bottom`
+  EXPECT_EQ(px(3, 2), glm::ivec4(0, 0, 255, 255));  // top row: `top`
+  const int half = int(std::nearbyint(raster::srgb_encode(0.5f) * 255.0f));
+  EXPECT_EQ(px(0, 1), glm::ivec4(half, 0, half, 255));  // halfway, mixed in linear, then encoded
+  EXPECT_EQ(px(1, 1), glm::ivec4(255, 255, 255, 255));
+  // The tutorial's clear colour comes out as the old frames showed it: linear 0.4 blue, sRGB-encoded.
+  const raster::ColorTarget tut = frame::develop(r, 0.0f, shading::ToneMap::clamp, *scenes::named_background("tutorial"), pool);
+  EXPECT_EQ(tut.row8(0)[2], uint8_t(std::nearbyint(raster::srgb_encode(0.4f) * 255.0f)));
+}
+
+TEST(Develop, SmoothGradientHasNoBands) {
+  const scenes::Scene scene = gradient_scene();
+  raster::Renderer renderer(testsupport::test_threads());
+  frame::FrameConfig o;
+  o.width = 320, o.height = 180;
+  const frame::Frame metered = frame::render_frame(scene, o, renderer);
+  // Metered, and two and a half stops darker, where an 8-bit linear buffer's codes are sRGB codes apart.
+  for (const float stops : {0.0f, 2.5f})
+    for (const shading::ToneMap t : {shading::ToneMap::neutral, shading::ToneMap::aces, shading::ToneMap::clamp}) {
+      SCOPED_TRACE(std::string(shading::tone_map_name(t)) + ", " + std::to_string(stops) + " stops under");
+      o.exposure = scenes::Exposure{metered.ev100 + stops};
+      o.tone_map = t;
+      const Steps s = steps(frame::render_frame(scene, o, renderer).color);
+      EXPECT_LE(s.largest, 1);
+      EXPECT_GE(s.span, 8) << "the gradient should span several codes";
+    }
+}
