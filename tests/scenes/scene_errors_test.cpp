@@ -88,7 +88,7 @@ TEST(SceneErrors, UnknownNames) {
             "scene.json: lights[0].type: unknown light type 'area' (known: directional, spot, point, hemispherical)");
   EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"technique": "raytraced"}}]})"),
             "scene.json: lights[0].shadow.technique: unknown technique 'raytraced' (known: none, shadowmap, cube, "
-            "paraboloid, pyramid, projective, cascades, lispsm, frustum-faces, esm, vsm, evsm2, evsm4, pcss)");
+            "paraboloid, pyramid, projective, cascades, lispsm, frustum-faces, esm, vsm, evsm2, evsm4, pcss, irregular)");
   EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"filter": "vsm"}}]})"),
             "scene.json: lights[0].shadow.filter: unknown filter 'vsm' (known: hard, pcf, poisson, stratified, "
             "rotated, early-bail)");
@@ -100,7 +100,7 @@ TEST(SceneErrors, UnknownNames) {
   EXPECT_EQ(json_error(R"({"lights": [{"type": "directional", "shadow": {"technique": "cube"}}]})"),
             "scene.json: lights[0].shadow.technique: technique cube does not serve directional lights (it serves: "
             "point, hemispherical) (use: none, shadowmap, projective, cascades, lispsm, frustum-faces, esm, vsm, evsm2, "
-            "evsm4, pcss)");
+            "evsm4, pcss, irregular)");
   EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "shadow": {"technique": "cube", "params": {"fit": "auto"}}}]})"),
             "scene.json: lights[0].shadow.params.fit: technique cube takes no parameter 'fit' (it takes: seamless, "
             "pcf_taps, stratify, poisson_variant)");

@@ -31,7 +31,7 @@ TEST(ShadowSettings, NameTablesRoundTrip) {
 TEST(ShadowSettings, NamesAreTheDocumentedOnes) {
   EXPECT_EQ(scenes::join_names(scenes::technique_names()),
             "none, shadowmap, cube, paraboloid, pyramid, projective, cascades, lispsm, frustum-faces, esm, vsm, "
-            "evsm2, evsm4, pcss");
+            "evsm2, evsm4, pcss, irregular");
   EXPECT_EQ(scenes::join_names(scenes::filter_names()), "hard, pcf, poisson, stratified, rotated, early-bail");
   EXPECT_EQ(scenes::join_names(scenes::bias_mode_names()), "none, constant, slope, offset, normal");
   EXPECT_EQ(scenes::join_names(scenes::depth_format_names()), "d16, d24, d32f");

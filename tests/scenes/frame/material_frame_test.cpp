@@ -260,7 +260,8 @@ TEST(MaterialFrame, MaskedFramesAreBitIdenticalAtAnyThreadCount) {
 
 // A textured quad facing the camera shows its texture upright (the file's top-left block at the frame's
 // top-left) and sRGB-decoded: each block's pixels equal those of the same quad with a flat base colour of the
-// block's decoded colour, times the base-colour factor.
+// block's decoded colour, times the base-colour factor. Compared in the camera pass's radiance, before the
+// picture's metered exposure (which differs between the four-coloured card and a one-coloured one).
 TEST(MaterialFrame, TexturedQuadShowsItsTextureUprightAndDecoded) {
   const fs::path file = testsupport::temp_dir("material_textured") / "blocks.png";
   // 2 × 2 blocks of 16 × 16 texels, file rows top first: top-left, top-right, bottom-left, bottom-right.
@@ -306,7 +307,7 @@ TEST(MaterialFrame, TexturedQuadShowsItsTextureUprightAndDecoded) {
     for (int dy = -4; dy <= 4; dy += 4)
       for (int dx = -4; dx <= 4; dx += 4) {
         const int x = centre[b].x + dx, y = centre[b].y + dy;
-        EXPECT_EQ(textured.color.read(x, y), flat.color.read(x, y)) << "block " << b << " at " << x << "," << y;
+        EXPECT_EQ(textured.radiance.read(x, y), flat.radiance.read(x, y)) << "block " << b << " at " << x << "," << y;
       }
   }
 }
