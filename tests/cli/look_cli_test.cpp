@@ -68,8 +68,14 @@ class LookCli : public ::testing::Test {
 // show), and at most 1 % of the pixels with a clipped channel. Before issue 17 tutorial-spot and
 // docs/examples/assets.json failed the 95th percentile (dark), lights.json the clipping (blown out).
 TEST_F(LookCli, EveryBuiltinAndExampleIsVisiblyLitAndNotClipped) {
+  size_t skipped = 0;
   for (const std::string& scene : first_scenes()) {
     SCOPED_TRACE(scene);
+    // docs/examples/assets.json loads models from ../shared/assets: checked where the folder is present.
+    if (fs::path(scene).filename() == "assets.json" && !testsupport::have_assets()) {
+      ++skipped;
+      continue;
+    }
     const testsupport::Outcome r = testsupport::shadowlab(dir, "render '" + scene + "' --size 320x180 --out f.png");
     ASSERT_EQ(r.code, 0) << r.err;
     const Luma l = luma_of(dir / "f.png");
@@ -82,6 +88,7 @@ TEST_F(LookCli, EveryBuiltinAndExampleIsVisiblyLitAndNotClipped) {
     EXPECT_GE(p95 - p5, 40.0f);
     EXPECT_LE(l.clipped, l.sorted.size() / 100) << "pixels with a channel at 255";
   }
+  if (skipped) GTEST_SKIP() << "docs/examples/assets.json not checked: " << testsupport::assets_dir() << " is absent";
 }
 
 TEST_F(LookCli, ExposureToneMapAndBackgroundChangeThePicture) {
