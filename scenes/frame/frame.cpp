@@ -222,8 +222,10 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
         lr.shadow = impl->plan(r.desc, r.config, *inputs);
       } catch (const tech::TechniqueError& e) {
         const std::string what = e.what();
-        // Messages that name a light field get the light's place in front; parameter messages already have it.
-        throw FrameError(what.rfind("lights[", 0) == 0 ? what : "lights[" + std::to_string(i) + "]." + what);
+        // Messages that name a light field get the light's place in front; parameter messages already have it
+        // (the light's "lights[i].shadow.params.<key>", or an override's "params.<key>", the CLI's option).
+        const bool named = what.rfind("lights[", 0) == 0 || what.rfind("params.", 0) == 0;
+        throw FrameError(named ? what : "lights[" + std::to_string(i) + "]." + what);
       }
       frame.stats.draws += lr.shadow->build(renderer, casters->geometry());
       ++frame.stats.maps_rendered;

@@ -90,7 +90,7 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
   for (const auto& [key, value] : s.params)
     if (tech::find_param(c.technique, key)) c.params[key] = value;
   for (const auto& [key, value] : o.params)
-    if (tech::find_param(c.technique, key)) c.params[key] = value;
+    if (tech::find_param(c.technique, key)) c.params[key] = value, c.overridden.insert(key);
   if (info.reads_filter) {
     try {
       const tech::Params p(c);

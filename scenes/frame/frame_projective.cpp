@@ -15,6 +15,7 @@
 
 #include "scenes/scene_queries.h"
 #include "scenes/frame/frame.h"
+#include "shading/techniques/fade_table.h"
 #include "shading/techniques/tutorial_fit.h"
 
 namespace frame {
@@ -81,10 +82,25 @@ tech::ProjectiveSettings resolve_projective(const tech::ShadowConfig& c) {
     p.mode = *tech::parse_projective_mode(params.text("projective_mode"));
     p.caster_shade = float(params.number("caster_shade"));
     p.lod_bias = float(params.number("lod_bias"));
+    p.blur_passes = int(params.number("blur_passes"));
+    p.blur_offset = float(params.number("blur_offset"));
     p.fade_start = float(params.number("fade_start"));
     p.fade_end = float(params.number("fade_end"));
     if (params.given("fade_end") && p.fade_end <= p.fade_start)
       throw tech::TechniqueError(params.where("fade_end") + ": must be greater than fade_start");
+    p.fade_lookup = *tech::parse_fade_lookup(params.text("fade_lookup"));
+    if (p.fade_lookup == tech::FadeLookup::texture && !(p.fade_end > p.fade_start))
+      throw tech::TechniqueError(params.where("fade_lookup") +
+                                 ": texture needs fade_end greater than fade_start (the distances the table spans)");
+    std::string why;
+    const std::optional<std::vector<float>> table = tech::parse_fade_table(params.text("fade_table"), why);
+    if (!table) throw tech::TechniqueError(params.where("fade_table") + ": " + why);
+    p.fade_table = *table;
+    // Settings that would silently do nothing are refused.
+    if (params.given("fade_table") && p.fade_lookup != tech::FadeLookup::texture)
+      throw tech::TechniqueError(params.where("fade_table") + ": has no effect unless fade_lookup is texture");
+    if (params.given("blur_offset") && p.blur_passes == 0)
+      throw tech::TechniqueError(params.where("blur_offset") + ": has no effect unless blur_passes is above 0");
     p.max_textures = int(params.number("max_textures"));
     p.decimate = params.flag("decimate");
     p.caster_reach = float(params.number("caster_reach"));
@@ -174,6 +190,10 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const P
     pf.stats.active = true;
     if (first) pf.mode = s.mode, pf.max_textures = s.max_textures, first = false;
     const tech::ProjectiveLight projector = projector_of(light);
+    // One fade texture per light, shared by its casters' readers.
+    const shading::Texture2D fade_table = s.fade_lookup == tech::FadeLookup::texture && s.fade_end > s.fade_start
+                                              ? tech::make_fade_texture(s.fade_table)
+                                              : shading::Texture2D{};
     for (uint32_t obj = 0; obj < by_object.size(); ++obj) {
       const std::vector<uint32_t>& members = by_object[obj];
       if (members.empty()) continue;
@@ -239,7 +259,7 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const P
       }
       if (!map->frustum.valid) continue;
       AppliedCaster c;
-      c.reader = tech::make_projective_reader(*map, s);
+      c.reader = tech::make_projective_reader(*map, s, fade_table);
       c.map = std::move(map);
       c.light = li;
       c.object = obj;

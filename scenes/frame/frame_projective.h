@@ -73,7 +73,8 @@ struct ProjectiveFrame {
 inline constexpr int kMaxProjectiveTextures = 8;
 
 // A light's projective settings from its merged configuration (map_size, and the parameters projective_mode,
-// max_textures, caster_shade, lod_bias, fade_start, fade_end, decimate). Throws FrameError naming the parameter.
+// max_textures, caster_shade, lod_bias, blur_passes, blur_offset, fade_start, fade_end, fade_lookup,
+// fade_table, decimate, caster_reach). Throws FrameError naming the parameter.
 shading::tech::ProjectiveSettings resolve_projective(const shading::tech::ShadowConfig& config);
 
 // The projective lights of a frame: their index in the scene and merged configuration.

@@ -6,38 +6,13 @@
 #include <array>
 #include <stdexcept>
 
+#include "shading/techniques/full_screen_pass.h"
+
 namespace shading::tech {
 
 namespace {
 
 using raster::simd::VecF32;
-
-// One triangle covering the whole viewport; the pipeline clips it to the viewport like any other.
-constexpr std::array<glm::vec4, 3> kFullScreen = {
-    glm::vec4(-1.0f, -1.0f, 0.0f, 1.0f), glm::vec4(3.0f, -1.0f, 0.0f, 1.0f), glm::vec4(-1.0f, 3.0f, 0.0f, 1.0f)};
-
-// Both fragment stages of a full-screen shader from one per-texel function `texel(x, y)` of the integer pixel
-// (gl_FragCoord − 0.5), so the quad and the wide path compute the same values bit for bit.
-template <class Derived>
-struct FullScreenShader {
-  using Vertex = glm::vec4;
-  using Varyings = raster::NoVaryings;
-  glm::vec4 vertex(const Vertex& v, Varyings&) const { return v; }
-  void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const {
-    for (size_t l = 0; l < 4; ++l)
-      out.color[l] = self().texel(int(q.frag_coord[l].x), int(q.frag_coord[l].y));
-  }
-  void fragment_pair(const raster::QuadPairIn<Varyings>& q, raster::QuadPairOut& out) const {
-    alignas(32) float fx[8], fy[8], ch[4][8];
-    q.frag_x.store(fx), q.frag_y.store(fy);
-    for (int l = 0; l < 8; ++l) {
-      const glm::vec4 t = self().texel(int(fx[l]), int(fy[l]));
-      for (int c = 0; c < 4; ++c) ch[c][l] = t[c];
-    }
-    for (size_t c = 0; c < 4; ++c) out.color[c] = VecF32::load(ch[c]);
-  }
-  const Derived& self() const { return static_cast<const Derived&>(*this); }
-};
 
 struct EncodeShader : FullScreenShader<EncodeShader> {
   const raster::DepthTarget* src = nullptr;
@@ -126,13 +101,6 @@ struct BlurShader : FullScreenShader<BlurShader<kChannels, kVertical>> {
   }
 };
 
-raster::DrawState full_screen_state() {
-  raster::DrawState s;
-  s.depth_test = false;
-  s.depth_write = false;
-  return s;
-}
-
 void check_float_target(const raster::ColorTarget& t, const char* what) {
   if (t.format() != raster::ColorFormat::rgba32f)
     throw std::invalid_argument(std::string(what) + ": the filterable map passes need an rgba32f target");
@@ -145,8 +113,7 @@ raster::DrawStats blur_with(raster::Renderer& renderer, const raster::ColorTarge
   auto draw = [&]<bool kVertical>() {
     BlurShader<kChannels, kVertical> s;
     s.src = &src, s.radius = radius, s.scale = scale;
-    return renderer.draw(raster::RenderTargets{nullptr, &dst}, full_screen_state(), s,
-                         std::span<const glm::vec4>(kFullScreen));
+    return draw_full_screen(renderer, dst, s);
   };
   return vertical ? draw.template operator()<true>() : draw.template operator()<false>();
 }
@@ -168,8 +135,7 @@ raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::Depth
     throw std::invalid_argument("encode_moments: the moment target must have the region's size");
   EncodeShader s;
   s.src = &src, s.region = region, s.depth = depth, s.params = p;
-  return renderer.draw(raster::RenderTargets{nullptr, &out}, full_screen_state(), s,
-                       std::span<const glm::vec4>(kFullScreen));
+  return draw_full_screen(renderer, out, s);
 }
 
 raster::DrawStats blur_pass(raster::Renderer& renderer, const raster::ColorTarget& src, raster::ColorTarget& dst,

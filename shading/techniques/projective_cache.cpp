@@ -35,7 +35,7 @@ CasterKey make_caster_key(const ProjectiveLight& light, const ProjectiveSettings
   CasterKey k;
   k.values = {light.directional ? 1.0f : 0.0f, light.position.x, light.position.y, light.position.z,
               light.direction.x, light.direction.y, light.direction.z, float(s.map_size), s.caster_shade,
-              s.lod_bias, s.decimate ? 1.0f : 0.0f};
+              s.lod_bias, float(s.blur_passes), s.blur_offset, s.decimate ? 1.0f : 0.0f};
   for (const CasterInstanceKey& i : instances) {
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) k.values.push_back(i.transform[c][r]);

@@ -1,6 +1,7 @@
 // How a caster's projective map is read: texgen (the light's bias × proj × view applied to the world
 // position), textureProj with clamped coordinates so everything outside the map reads its white edge, the mip
-// chain read with a LOD bias for blur, a fade with distance behind the caster, and "correct side only" (q <= 0,
+// chain read with a LOD bias for blur, a fade with distance behind the caster (a linear ramp, or a LINEAR lookup
+// of a 1-D fade table, fade_table.h), and "correct side only" (q <= 0,
 // or a point nearer the light than the caster's near side, gets no shadow from it). One ProjectiveReader is
 // snapshotted per draw; projective_factors() runs per 2×2 quad (quad derivatives choose the mip level).
 #pragma once
@@ -14,6 +15,7 @@
 
 #include "shading/fragment.h"
 #include "shading/lookup.h"
+#include "shading/techniques/fade_table.h"
 #include "shading/techniques/projective_map.h"
 
 namespace shading::tech {
@@ -23,19 +25,25 @@ struct ProjectiveReader {
   glm::vec4 depth_row{0.0f};
   float near_depth = 0.0f;
   float fade_start = 0.0f, fade_end = 0.0f;
+  Texture2D fade_table;  // empty: the formula's ramp; else the fade texture (fade_lookup = texture)
   Texture2D texture;  // views the CasterMap's target: the map must outlive the reader
   Sampler sampler;
 };
 
 // The map's lookup: LINEAR, clamp to edge (the white ring makes the clamp a no-op outside the map), mipmapped
 // LINEAR with the settings' LOD bias when the plan has mip levels, λ clamped to the levels whose edge is white.
-inline ProjectiveReader make_projective_reader(const CasterMap& map, const ProjectiveSettings& s) {
+// With fade_lookup = texture the reader reads `fade_table` (shared by a light's casters: make it once with
+// make_fade_texture), or, when that is empty, a texture of its own made from the settings' table.
+inline ProjectiveReader make_projective_reader(const CasterMap& map, const ProjectiveSettings& s,
+                                               const Texture2D& fade_table = {}) {
   ProjectiveReader r;
   r.texgen = map.frustum.texgen;
   r.depth_row = map.frustum.depth_row;
   r.near_depth = map.frustum.near_depth;
   r.fade_start = s.fade_start;
   r.fade_end = s.fade_end;
+  if (s.fade_lookup == FadeLookup::texture && s.fade_end > s.fade_start)
+    r.fade_table = fade_table.empty() ? make_fade_texture(s.fade_table) : fade_table;
   r.texture = map.texture;
   r.sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge,
                              map.mips.max_level > 0 ? MipFilter::linear : MipFilter::none);
@@ -83,7 +91,7 @@ inline Quad<float> projective_factors(const ProjectiveReader& r, const Quad<glm:
     float v = mask[l].r;
     if (r.fade_end > r.fade_start) {
       const float t = std::clamp((depth[l] - r.near_depth - r.fade_start) / (r.fade_end - r.fade_start), 0.0f, 1.0f);
-      v = v + (1.0f - v) * t;
+      v = v + (1.0f - v) * (r.fade_table.empty() ? t : fade_at(r.fade_table, t));
     }
     f[l] = v;
   }

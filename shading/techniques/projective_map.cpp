@@ -6,6 +6,7 @@
 
 #include "shading/techniques/caster_decimate.h"
 #include "shading/techniques/masked_depth.h"
+#include "shading/techniques/offset_blur.h"
 
 namespace shading::tech {
 
@@ -29,17 +30,22 @@ CasterMap build_caster_map(raster::Renderer& renderer, const ProjectiveLight& li
   CasterMap m;
   const int size = std::max(1, settings.map_size);
   m.mips = plan_mips(size, settings.lod_bias);
-  m.frustum = fit_caster_frustum(light, bounds, size, m.mips.ring);
+  // The offset blur spreads dark texels one texel per pass: the caster is drawn that many texels further in, so
+  // the ring the mips need (one texel without them) is still white after the last pass. Passes that would
+  // leave no inner texel are given up, as plan_mips gives up levels.
+  m.blur_passes = std::clamp(settings.blur_passes, 0, std::max(0, (size - 1) / 2 - m.mips.ring));
+  const int ring = m.mips.ring + m.blur_passes;
+  m.frustum = fit_caster_frustum(light, bounds, size, ring);
   m.bounds = bounds;
   m.target = std::make_unique<raster::ColorTarget>(size, size, raster::ColorFormat::rgba8);
   m.target->clear(glm::vec4(1.0f));
-  const int inner = size - 2 * m.mips.ring;
+  const int inner = size - 2 * ring;
   if (m.frustum.valid && inner >= 1) {
     raster::DrawState s;
     s.depth_test = false;
     s.depth_write = false;
     s.cull = raster::CullMode::none;
-    s.scissor = raster::Rect{m.mips.ring, m.mips.ring, inner, inner};  // the outer ring stays white
+    s.scissor = raster::Rect{ring, ring, inner, inner};  // the outer ring stays white
     CasterMaskShader shader;
     shader.view_proj = m.frustum.proj * m.frustum.view;
     // A cell of half a texel: merged vertices move by less than one texel's width.
@@ -62,6 +68,10 @@ CasterMap build_caster_map(raster::Renderer& renderer, const ProjectiveLight& li
       renderer.draw(raster::RenderTargets{nullptr, m.target.get()}, s, shader,
                     std::span<const glm::vec3>(mesh.positions), std::span<const uint32_t>(mesh.indices));
     }
+  }
+  if (m.blur_passes > 0) {
+    auto scratch = std::make_unique<raster::ColorTarget>(size, size, raster::ColorFormat::rgba8);
+    offset_blur(renderer, m.target, scratch, m.blur_passes, settings.blur_offset);
   }
   m.texture = Texture2D::view(*m.target);
   if (m.mips.max_level > 0) m.texture.generate_mips();

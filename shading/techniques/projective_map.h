@@ -1,7 +1,7 @@
 // Building one caster's projective map: a small RGBA8 colour target cleared to white with the caster drawn
 // into it in black (grey for non-opaque parts) through its fitted frustum, an outer ring of texels kept white
-// by the frustum's margin and by a scissor, and (when the lookup blurs) a box-filtered mip chain whose edge
-// texels stay white too. Like the article's software rasterizer for shadow maps: no depth buffer, flat colour.
+// by the frustum's margin and by a scissor, optionally blurred by drawing it onto itself at an offset
+// (offset_blur.h), and (when the lookup blurs) a box-filtered mip chain whose edge texels stay white too. Like the article's software rasterizer for shadow maps: no depth buffer, flat colour.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -46,6 +46,7 @@ struct CasterMap {
   std::unique_ptr<raster::ColorTarget> target;  // held by pointer: `texture` views it
   Texture2D texture;                            // level 0 views `target`; levels 1.. owned (when blurred)
   MipPlan mips;
+  int blur_passes = 0;                          // offset-blur passes run (settings' count, fewer on tiny maps)
   uint64_t triangles = 0;                       // triangles drawn into the map (after decimation)
 };
 
@@ -66,8 +67,9 @@ struct CasterMaskShader {
   }
 };
 
-// Fits the frustum to `bounds`, draws every part (decimated to the map's resolution when settings.decimate),
-// builds the mips the plan asks for. A caster the frustum cannot hold (light inside its bounds) gets an
+// Fits the frustum to `bounds` inside a white ring of mips.ring + blur_passes texels, draws every part
+// (decimated to the map's resolution when settings.decimate), runs the offset-blur passes, builds the mips the
+// plan asks for. A caster the frustum cannot hold (light inside its bounds) gets an
 // all-white map and an invalid frustum.
 CasterMap build_caster_map(raster::Renderer& renderer, const ProjectiveLight& light,
                            const ProjectiveSettings& settings, const Box& bounds, std::span<const CasterPart> parts);

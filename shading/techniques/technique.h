@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -50,6 +51,9 @@ struct ShadowConfig {
   DepthFormat depth_format = DepthFormat::d16;
   std::map<std::string, ParamValue> params;  // the technique's own parameters (checked with param_problem)
   std::string where = "shadow.params.";      // prefix naming a parameter in messages
+  // Keys the frame's overrides gave (the command line's options): named "params.<key>" in messages, which the
+  // CLI turns into the option, rather than `where` + key.
+  std::set<std::string> overridden;
 };
 
 // Reads a technique's parameters from a ShadowConfig: the given value, or the ParamSpec's default.
@@ -60,7 +64,9 @@ class Params {
   double number(std::string_view key) const;
   std::string text(std::string_view key) const;  // choice and text parameters
   bool given(std::string_view key) const { return c_.params.count(std::string(key)) != 0; }
-  std::string where(std::string_view key) const { return c_.where + std::string(key); }
+  std::string where(std::string_view key) const {
+    return (c_.overridden.count(std::string(key)) ? std::string("params.") : c_.where) + std::string(key);
+  }
 
  private:
   const ParamSpec& spec(std::string_view key) const;

@@ -134,10 +134,23 @@ inline constexpr ParamSpec kProjectiveParams[] = {
     {"caster_shade", "--caster-shade", ParamKind::number, "0", "projective: the shade a caster's mask is drawn with",
      0, 1},
     {"lod_bias", "--lod-bias", ParamKind::number, "0", "projective: mip level bias of the mask lookups", 0, 8},
+    {"blur_passes", "--blur-passes", ParamKind::integer, "0",
+     "projective: blur each mask by drawing it onto itself at an offset this many times (bilinear lookups at "
+     "+-blur_offset texels; 0: none)", 0, 16},
+    {"blur_offset", "--blur-offset", ParamKind::number, "0.5",
+     "projective, blur_passes > 0: the offset of the lookups in texels (0.5: a 1/4, 1/2, 1/4 tent per pass)", 0.05,
+     1, {}, "beyond one texel a pass would read past its neighbours"},
     {"fade_start", "--fade-start", ParamKind::number, "0", "projective: distance where the shadow starts to fade",
      0, 1e6},
     {"fade_end", "--fade-end", ParamKind::number, "0", "projective: distance where the shadow has faded (0: never)",
      0, 1e6},
+    {"fade_lookup", "--fade-lookup", ParamKind::choice, "formula",
+     "projective: the fade's strength from a linear ramp (formula), or a LINEAR lookup of a 1-D texture of "
+     "fade_table indexed by distance over fade_start..fade_end (texture, the article's)", 0, 0,
+     {"formula", "texture"}},
+    {"fade_table", "--fade-table", ParamKind::text, "linear",
+     "projective, fade_lookup = texture: the strengths from fade_start to fade_end: linear (1,0: the formula's "
+     "ramp), smoothstep, or 2 to 256 comma-separated values in [0, 1]"},
     {"decimate", "--decimate", ParamKind::flag, "true",
      "projective: draw each mask from the caster clustered to half a map texel (same silhouette, fewer triangles)"},
     {"caster_reach", "--caster-reach", ParamKind::number, "0",

@@ -181,7 +181,7 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
   expect_bad("render tutorial --bias-constant nan --out f.png", "--bias-constant", "f.png");
   expect_bad("render tutorial --stratify diagonal --out f.png", "--stratify", "f.png");
   expect_bad("render tutorial --filter hard --poisson-variant tutorial --out f.png", "--poisson-variant", "f.png");
-  expect_bad("render tutorial --fit auto --fit-cutoff 10 --out f.png", "lights[0].shadow.params.fit_cutoff", "f.png");
+  expect_bad("render tutorial --fit auto --fit-cutoff 10 --out f.png", "--fit-cutoff", "f.png");
   expect_bad("render tutorial --fit loose --out f.png", "--fit", "f.png");
   expect_bad(shadowmap("--format d8"), "--format", "d.exr");
   expect_bad(shadowmap("--cull sideways"), "--cull", "d.exr");

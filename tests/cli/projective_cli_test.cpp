@@ -79,6 +79,13 @@ TEST_F(ProjectiveCli, BadValuesNameTheOption) {
   expect_bad("render tutorial --size 32x18 --animate", "--animate");
   expect_bad("render projective --size 32x18 --animate --fps 0", "--fps");
   expect_bad("render projective --size 32x18 --animate --fps -2", "--fps");
+  expect_bad("render projective --size 32x18 --blur-passes 17", "--blur-passes");
+  expect_bad("render projective --size 32x18 --blur-passes 1 --blur-offset 2", "--blur-offset");
+  expect_bad("render projective --size 32x18 --blur-offset 0.5", "--blur-offset");
+  expect_bad("render projective --size 32x18 --fade-lookup curve", "--fade-lookup");
+  expect_bad("render projective --size 32x18 --fade-lookup texture", "--fade-lookup");
+  expect_bad("render projective --size 32x18 --fade-end 2 --fade-lookup texture --fade-table 1,2", "--fade-table");
+  expect_bad("render projective --size 32x18 --fade-end 2 --fade-table 1,0", "--fade-table");
 }
 
 }  // namespace

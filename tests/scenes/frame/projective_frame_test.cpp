@@ -2,7 +2,8 @@
 // receivers outside every caster frustum are drawn once; the cache rebuilds nothing for a still frame and
 // exactly the moved caster's map; multipass and single-pass frames agree within 1/255 (here: exactly); the
 // built-in `projective` scene's golden hash is bit-exact at 0, 1 and 2 threads; maps come out as EXR records;
-// bad params name their key; the per-pixel surface record holds the product of the maps' factors (analytic
+// the offset blur is bit-exact across thread counts; the fade texture with the default table gives the formula's
+// frame bit for bit; bad params name their key; the per-pixel surface record holds the product of the maps' factors (analytic
 // footprint, the same in both modes and at every thread count).
 #include <gtest/gtest.h>
 
@@ -212,6 +213,54 @@ TEST(ProjectiveFrame, GoldenBuiltinSceneAcrossThreadCounts) {
   testsupport::expect_golden_hash("projective", first, kGolden);
 }
 
+// The article's blur by drawing each map onto itself at an offset (blur_passes): the frame is bit-identical at
+// 0, 1 and 2 threads in both modes, and differs from the unblurred one.
+TEST(ProjectiveFrame, OffsetBlurIsTheSameAtEveryThreadCount) {
+  scenes::Scene scene = scenes::builtin_scene("projective");
+  scene.lights[0].shadow.params["blur_passes"] = 2.0;
+  scene.lights[0].shadow.params["blur_offset"] = 0.7;
+  uint64_t first = 0;
+  for (int threads : {0, 1, 2}) {
+    for (const char* mode : {"multipass", "single-pass"}) {
+      raster::Renderer r(threads);
+      frame::FrameConfig o = small(320, 180);
+      o.params["projective_mode"] = std::string(mode);
+      const uint64_t h = testsupport::frame_hash(frame::render_frame(scene, o, r).color);
+      if (first == 0) first = h;
+      EXPECT_EQ(h, first) << "threads " << threads << " " << mode;
+    }
+  }
+  raster::Renderer r(testsupport::test_threads());
+  scene.lights[0].shadow.params.erase("blur_passes");
+  scene.lights[0].shadow.params.erase("blur_offset");
+  EXPECT_NE(testsupport::frame_hash(frame::render_frame(scene, small(320, 180), r).color), first);
+}
+
+// The article's fade through a lookup texture: with the default table (linear) the frame is the formula's bit
+// for bit, with blur, a grey shade and two lights, in both modes; another table gives another frame.
+TEST(ProjectiveFrame, FadeTextureWithTheDefaultTableIsTheFormulaFrame) {
+  raster::Renderer r(testsupport::test_threads());
+  scenes::Scene scene = scenes::builtin_scene("projective", {2.0});
+  for (auto& [key, value] : std::initializer_list<std::pair<const char*, scenes::TechniqueParam>>{
+           {"lod_bias", 1.0}, {"fade_start", 0.5}, {"fade_end", 3.0}, {"caster_shade", 0.2}})
+    scene.lights[0].shadow.params[key] = value;
+  scenes::Light second = scene.lights[0];
+  second.direction = glm::normalize(glm::vec3(0.7f, -1.0f, -0.4f));
+  scene.lights.push_back(second);
+  for (const char* mode : {"multipass", "single-pass"}) {
+    frame::FrameConfig o = small(320, 180);
+    o.params["projective_mode"] = std::string(mode);
+    const frame::Frame formula = frame::render_frame(scene, o, r);
+    o.params["fade_lookup"] = std::string("texture");
+    const frame::Frame texture = frame::render_frame(scene, o, r);
+    EXPECT_EQ(testsupport::frame_hash(texture.color), testsupport::frame_hash(formula.color)) << mode;
+    EXPECT_EQ(max_difference(texture.color, formula.color), 0) << mode;
+    o.params["fade_table"] = std::string("smoothstep");
+    const frame::Frame smooth = frame::render_frame(scene, o, r);
+    EXPECT_GT(max_difference(smooth.color, formula.color), 0) << mode;
+  }
+}
+
 TEST(ProjectiveFrame, MapsAsExrRecords) {
   raster::Renderer r(0);
   const frame::Frame f = frame::render_frame(scenes::builtin_scene("projective"), small(), r);
@@ -243,6 +292,10 @@ TEST(ProjectiveFrame, TableDefaultsAreTheTechniqueDefaults) {
   EXPECT_EQ(p.lod_bias, d.lod_bias);
   EXPECT_EQ(p.fade_start, d.fade_start);
   EXPECT_EQ(p.fade_end, d.fade_end);
+  EXPECT_EQ(p.blur_passes, d.blur_passes);
+  EXPECT_EQ(p.blur_offset, d.blur_offset);
+  EXPECT_EQ(p.fade_lookup, d.fade_lookup);
+  EXPECT_EQ(p.fade_table, d.fade_table);
   EXPECT_EQ(p.decimate, d.decimate);
   EXPECT_EQ(p.max_textures, d.max_textures);
 }
@@ -266,6 +319,18 @@ TEST(ProjectiveFrame, BadParamsNameTheirKey) {
   expect_bad("max_textures", 2.5, "lights[0].shadow.params.max_textures: ");
   expect_bad("projective_mode", std::string("twice"), "lights[0].shadow.params.projective_mode: ");
   expect_bad("decimate", 1.0, "lights[0].shadow.params.decimate: ");
+  expect_bad("blur_passes", 17.0, "lights[0].shadow.params.blur_passes: ");
+  expect_bad("blur_passes", 1.5, "lights[0].shadow.params.blur_passes: ");
+  expect_bad("blur_offset", 0.0, "lights[0].shadow.params.blur_offset: ");
+  expect_bad("blur_offset", 1.5, "lights[0].shadow.params.blur_offset: ");
+  expect_bad("fade_lookup", std::string("curve"), "lights[0].shadow.params.fade_lookup: ");
+  expect_bad("fade_lookup", std::string("texture"), "lights[0].shadow.params.fade_lookup: ");  // no fade range
+  expect_bad("fade_table", std::string("1,2"), "lights[0].shadow.params.fade_table: ");
+  expect_bad("fade_table", std::string("steep"), "lights[0].shadow.params.fade_table: ");
+  expect_bad("fade_table", 0.5, "lights[0].shadow.params.fade_table: ");
+  // Settings that would do nothing: a table without the texture lookup, an offset without passes.
+  expect_bad("fade_table", std::string("1,1"), "lights[0].shadow.params.fade_table: ");
+  expect_bad("blur_offset", 0.5, "lights[0].shadow.params.blur_offset: ");
   scenes::Scene scene = scene_from(kTwoFloors);
   frame::FrameConfig o = small();
   o.params["projective_mode"] = std::string("sometimes");

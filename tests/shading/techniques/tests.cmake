@@ -8,6 +8,8 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/bias_measure_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/projective_map_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/projective_outline_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/offset_blur_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/fade_table_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_map_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_agreement_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_density_test.cpp
