@@ -19,6 +19,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/eval_report.h"
+#include "cli/light_choice.h"
 #include "raster/renderer.h"
 #include "scenes/frame/frame.h"
 #include "scenes/io/atomic_write.h"
@@ -40,6 +41,7 @@ struct EvalArgs {
   int near_radius = 2;
   std::optional<bool> cull_front;  // --cull-front / --no-cull-front for every combination
   std::string shard;               // --shard I/N: only combinations K with K mod N = I
+  std::string light;               // --light NAME|INDEX: score that light alone
   float shimmer_pixels = 0.0f;     // --shimmer-pixels: camera slide for the shimmer columns (0: not measured)
   float shimmer_degrees = 0.0f;    // --shimmer-degrees: light turn for the shimmer columns (0: not measured)
 };
@@ -176,7 +178,8 @@ int run_eval(const EvalArgs& a) {
 
   const scenes::StageOptions stage;  // a bare glTF model gets its sun, ground and camera, as in render
   std::vector<std::string> notes;
-  const scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
+  scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
+  choose_light(scene, a.light);
   const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);  // once for the sweep
   print_notes(notes);
   raster::Renderer renderer(a.threads);
@@ -281,6 +284,7 @@ Command add_eval_command(CLI::App& parent) {
   app->add_option("--biases", args->biases, "Comma-separated bias modes (default: each light's own)");
   app->add_option("--sizes", args->sizes, "Comma-separated shadow map sides, 16..16384 (default: each light's own)");
   app->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (default 1280x720)");
+  app->add_option("--light", args->light, "NAME or INDEX: score that light of the scene alone (default: every light)");
   app->add_option("--threads", args->threads, "Worker threads (0: inline; default: all cores)");
   app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
   app->add_flag_callback("--no-cull-front", [args] { args->cull_front = false; }, "Render front faces into the maps");

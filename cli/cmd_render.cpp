@@ -19,6 +19,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/camera_choice.h"
+#include "cli/light_choice.h"
 #include "cli/look_options.h"
 #include "cli/eval_report.h"
 #include "cli/json_output.h"
@@ -57,6 +58,7 @@ struct RenderArgs {
   bool ground = true;         // --ground / --no-ground: a plane under a bare glTF model (scenes/stage.h)
   std::string sun, up = "y";  // --sun AZ,EL for a bare model; --up y|z: the model's up axis
   std::string camera;         // --camera NAME|INDEX|orbit:AZ,EL[,DIST]
+  std::string light;          // --light NAME|INDEX: that light alone
   LookArgs look;              // --exposure, --tonemap, --background
   bool json = false;          // --json: one document on stdout instead of text
   std::string batch, shard;   // --batch FILE, --shard I/N (top level only)
@@ -352,6 +354,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);
   frame::FrameConfig config;
   config.camera = choose_camera(scene, a.camera);
+  const std::optional<size_t> chosen_light = choose_light(scene, a.light);
   print_notes(notes);
   config.width = size.width;
   config.height = size.height;
@@ -391,7 +394,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
       const std::string what = e.what();
       const size_t colon = what.find(": ");
       if (colon == std::string::npos) throw;
-      throw CliError(option_for_field(what.substr(0, colon)), what.substr(colon + 2));
+      throw CliError(option_for_field(light_field(what.substr(0, colon), chosen_light)), what.substr(colon + 2));
     }
     const double total = watch.ms();
     if (text && a.stats) {
@@ -588,6 +591,8 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
   app->add_option("--up", args->up, "y|z: a glTF model's up axis (z: rotated to +Y; default y)");
   app->add_option("--camera", args->camera,
                   "NAME, INDEX or orbit:AZ,EL[,DIST]: the camera (orbit: around the casters, framed when DIST is left out)");
+  app->add_option("--light", args->light,
+                  "NAME or INDEX: render that light of the scene alone (a bare glTF model's staged sun is 'sun')");
   add_look_options(*app, args->look);
   app->add_flag("--json", args->json, "Print JSON (docs/cli/render.schema.json) instead of text");
   app->add_option("--batch", args->batch,

@@ -1,8 +1,10 @@
 // The exact hard shadow of a frame: for every covered pixel of the camera pass's surface record and every light,
 // one occlusion ray from the pixel's surface point towards the light through the OcclusionScene. Directional
 // lights: along −direction, unbounded; point, hemispherical and spot lights: to the light's position, inside the
-// spot's outer cone (a hemispherical light's half-space) and the light's range. The origin is moved off the surface along the geometric normal (the
-// side the camera sees) by `epsilon`, so the surface does not occlude itself. Rows are cast in parallel through
+// spot's outer cone (a hemispherical light's half-space) and the light's range. The origin is moved off the surface
+// along the geometric normal (the side the camera sees) by `epsilon`, so the surface does not occlude itself; a
+// point, spot or hemispherical light's ray then runs from that origin to the light itself (a directional light's
+// keeps its direction). Rows are cast in parallel through
 // raster::ThreadPool, each index writing only its own rows, so the result is the same at any thread count.
 #pragma once
 #include <cstdint>

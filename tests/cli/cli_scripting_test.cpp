@@ -301,6 +301,48 @@ TEST_F(CliScripting, BareGltfModelGetsASunAGroundAndAShadow) {
   testsupport::expect_bad_run(dir, "render tutorial --camera orbit:10 --out x.png", "--camera", "x.png");
   testsupport::expect_bad_run(dir, "render tutorial --sun 10,-5 --out x.png", "--sun", "x.png");
   testsupport::expect_bad_run(dir, "render tutorial --up x --out x.png", "--up", "x.png");
+  // The staged sun is a light like any other: --light sun keeps the shadow.
+  EXPECT_GT(shadowed("fox/Fox.gltf", "--light sun").first, 150u);
+}
+
+// --light NAME|INDEX renders one light alone: the same frame as a scene file holding only that light, by name or
+// by index; the maps are that light's alone; unknown lights are refused listing the scene's; a frame error names
+// the light's place in the file.
+TEST_F(CliScripting, LightPicksOneLightByNameOrIndex) {
+  const std::string objects = R"("objects": [{"primitive": {"type": "plane", "size": [8, 8]}},
+      {"primitive": {"type": "box", "size": [1, 1, 1]}, "transform": {"translate": [0, 0.5, 0]}}],
+    "cameras": [{"position": [0, 5, 7], "target": [0, 0, 0]}])";
+  const std::string key = R"({"name": "key", "type": "directional", "direction": [-0.4, -1, -0.3], "intensity": 2000})";
+  const std::string fill = R"({"name": "fill", "type": "spot", "position": [3, 4, 2], "direction": [-0.6, -0.8, -0.4],
+      "intensity": 300, "range": 20})";
+  std::ofstream(dir / "two.json") << "{" << objects << R"(, "lights": [)" << key << ", " << fill << "]}";
+  std::ofstream(dir / "fill.json") << "{" << objects << R"(, "lights": [)" << fill << "]}";
+  auto hash = [&](const std::string& args) {
+    const nlohmann::json d = json_run(dir, "render " + args + " --size 96x64 --json --out h.png", "render");
+    return d.empty() ? std::string() : d["jobs"][0]["frames"][0]["hash"].get<std::string>();
+  };
+  const std::string alone = hash("fill.json");
+  ASSERT_FALSE(alone.empty());
+  EXPECT_EQ(hash("two.json --light fill"), alone);
+  EXPECT_EQ(hash("two.json --light 1"), alone);
+  EXPECT_NE(hash("two.json"), alone);  // both lights: another frame
+  EXPECT_NE(hash("two.json --light key"), alone);
+  // Only the chosen light's maps are built: the paraboloid lamp of lights.json.
+  const std::string lights = (fs::path(SHADOWLAB_SOURCE_DIR) / "docs/examples/lights.json").string();
+  const nlohmann::json d = json_run(dir, "render '" + lights + "' --light lamp --size 64x36 --json --out l.png", "render");
+  ASSERT_FALSE(d.empty());
+  const nlohmann::json& maps = d["jobs"][0]["frames"][0]["maps"];
+  ASSERT_EQ(maps.size(), 1u);
+  EXPECT_EQ(maps[0]["technique"], "paraboloid");
+  EXPECT_EQ(maps[0]["light"], "light0-lamp");
+  // Refusals: on the option, listing the lights; a bad setting of the chosen light names it as lights[2].
+  const Outcome r = shadowlab(dir, "render two.json --light rim --out x.png");
+  EXPECT_THAT(r.err, ::testing::HasSubstr("0 'key', 1 'fill'"));
+  testsupport::expect_bad_run(dir, "render two.json --light rim --out x.png", "--light", "x.png");
+  testsupport::expect_bad_run(dir, "render two.json --light 2 --out x.png", "--light", "x.png");
+  testsupport::expect_bad_run(dir, "eval two.json --light rim --size 16x16 --out ev", "--light", "ev");
+  testsupport::expect_bad_run(dir, "render '" + lights + "' --light lamp --split-plane q --out x.png",
+                              "lights[2].shadow.params.split_plane", "x.png");
 }
 
 // The README's quick start, run as written (the binary path mapped to this build's).

@@ -3,8 +3,11 @@
 // code between neighbouring pixels (a frame shaded into a linear 8-bit buffer steps by up to 13 codes in the dark).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <vector>
 
 #include "raster/formats.h"
 #include "scenes/frame/develop.h"
@@ -137,4 +140,71 @@ TEST(Develop, SmoothGradientHasNoBands) {
       EXPECT_LE(s.largest, 1);
       EXPECT_GE(s.span, 8) << "the gradient should span several codes";
     }
+}
+
+// develop() stores, pixel for pixel, the bytes that ColorTarget::write stores for the tone-mapped value in an sRGB
+// target (it encodes through raster/srgb8.h's thresholds instead of a pow per channel): luminances over 24 stops,
+// coloured, with undrawn pixels between them, every operator, at any thread count.
+TEST(Develop, StoresWhatAnSrgbTargetWriteStores) {
+  const int w = 97, h = 61;
+  raster::ColorTarget r(w, h, raster::ColorFormat::rgba32f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const float l = std::exp2(-12.0f + 24.0f * float(x + w * y) / float(w * h));
+      r.write(x, y, (x + y) % 7 == 0 ? glm::vec4(0.0f) : glm::vec4(l, 0.6f * l, 0.2f * l + 1e-4f, 1.0f));
+    }
+  const scenes::Background b{{0.1f, 0.3f, 0.9f}, {0.8f, 0.7f, 0.2f}};
+  for (const shading::ToneMap t : {shading::ToneMap::neutral, shading::ToneMap::aces, shading::ToneMap::clamp})
+    for (const int threads : {0, 3}) {
+      raster::ThreadPool pool(threads);
+      const raster::ColorTarget c = frame::develop(r, 1.5f, t, b, pool);
+      raster::ColorTarget expected(w, h, raster::ColorFormat::rgba8, true);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const glm::vec4 p = r.read(x, y);
+          const float s = float(y) / float(h - 1);
+          expected.write(x, y, p.a > 0.0f ? glm::vec4(shading::tone_map(glm::vec3(p) * shading::exposure_scale(1.5f), t), 1.0f)
+                                          : glm::vec4(b.bottom * (1.0f - s) + b.top * s, 1.0f));
+        }
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < 4 * w; ++x) ASSERT_EQ(c.row8(y)[x], expected.row8(y)[x]) << x / 4 << ", " << y;
+    }
+}
+
+// The metered EV100 is exactly the one of the plain computation (log2 summed row by row, the 99th percentile by
+// std::nth_element over every lit luminance) on a frame of many distinct, repeated and tiny luminances.
+TEST(Develop, MeteringIsExactlyThePlainComputation) {
+  const int w = 203, h = 117;
+  raster::ColorTarget r(w, h, raster::ColorFormat::rgba32f);
+  uint32_t seed = 12345;
+  auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const uint32_t n = next();
+      const float l = n % 13 == 0 ? 1e-40f : n % 5 == 0 ? 3.0f : std::exp2(float(n >> 8) / float(1 << 24) * 40.0f - 20.0f);
+      r.write(x, y, n % 11 == 0 ? glm::vec4(l, l, l, 0.0f) : glm::vec4(l, 0.5f * l, 2.0f * l, 1.0f));
+    }
+  std::vector<float> all;
+  double sum = 0.0;
+  for (int y = 0; y < h; ++y) {
+    double row = 0.0;
+    for (int x = 0; x < w; ++x) {
+      const glm::vec4 p = r.read(x, y);
+      const float l = shading::luminance(glm::vec3(p));
+      if (!(p.a > 0.0f) || !(l > 0.0f) || !std::isfinite(l)) continue;
+      all.push_back(l);
+      row += std::log2(double(l));
+    }
+    sum += row;
+  }
+  const auto p99 = all.begin() + std::ptrdiff_t(double(all.size() - 1) * 0.99);
+  std::nth_element(all.begin(), p99, all.end());
+  for (const shading::ToneMap t : {shading::ToneMap::neutral, shading::ToneMap::clamp}) {
+    const float expected = std::max(shading::ev100_mapping(std::exp2(sum / double(all.size())), 0.18),
+                                    shading::ev100_mapping(double(*p99), double(frame::highlight_limit(t))));
+    for (const int threads : {0, 2}) {
+      raster::ThreadPool pool(threads);
+      EXPECT_EQ(frame::metered_ev100(r, t, pool), expected);
+    }
+  }
 }

@@ -1,0 +1,94 @@
+// Staging a bare glTF model (scenes/stage.h): a model without lights gets a sun where asked and a ground under
+// its bounds, a Z-up model is turned upright, and a file's own light keeps it from being staged; built from
+// tiny glTF files written by the test (a box 1 × 2 × 4 m, its long side along +Z).
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "scenes/scene_error.h"
+#include "scenes/scene_queries.h"
+#include "scenes/stage.h"
+#include "tests/scenes/gltf_fixture.h"
+#include "tests/support.h"
+
+namespace {
+
+// A closed box from (0, 0, 0) to (1, 2, 4), twelve triangles; with a point light when `light`.
+std::filesystem::path write_box(const std::filesystem::path& dir, const std::string& name, bool light) {
+  testsupport::GltfFixture f;
+  std::vector<glm::vec3> p;
+  for (int i = 0; i < 8; ++i) p.emplace_back(float(i & 1), 2.0f * float((i >> 1) & 1), 4.0f * float(i >> 2));
+  const std::vector<uint32_t> idx = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                                     2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  f.node({{"mesh", f.mesh(f.positions(p), f.indices(idx))}});
+  if (light) {
+    f.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    f.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"name", "bulb"}, {"type", "point"}, {"intensity", 50}}};
+    f.node({{"translation", {0.5, 5, 2}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  }
+  return f.write_gltf(dir, name);
+}
+
+const scenes::Light* find_light(const scenes::Scene& s, const std::string& name) {
+  for (const scenes::Light& l : s.lights)
+    if (l.name == name) return &l;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(Stage, BareModelGetsASunAGroundAndACamera) {
+  const auto dir = testsupport::temp_dir("stage_bare");
+  scenes::StageOptions o;
+  o.sun = glm::vec2(90.0f, 30.0f);
+  const scenes::StagedScene s = scenes::load_model_staged(write_box(dir, "box", false), o);
+  ASSERT_EQ(s.scene.lights.size(), 1u);
+  const scenes::Light* sun = find_light(s.scene, "sun");
+  ASSERT_NE(sun, nullptr);
+  EXPECT_EQ(sun->type, scenes::LightType::directional);
+  // Azimuth 90 (from +Z towards +X), elevation 30: it shines towards −X and down.
+  EXPECT_NEAR(sun->direction.x, -std::cos(glm::radians(30.0f)), 1e-5f);
+  EXPECT_NEAR(sun->direction.y, -0.5f, 1e-5f);
+  EXPECT_NEAR(sun->direction.z, 0.0f, 1e-5f);
+  // The ground: 3 × the larger horizontal side (4 m along z), its top at the model's base, centred under it.
+  const scenes::Aabb all = scenes::scene_bounds(s.scene), casters = scenes::scene_bounds(s.scene, scenes::InstanceFilter::casters);
+  EXPECT_NEAR(all.max.x - all.min.x, 12.0f, 1e-4f);
+  EXPECT_NEAR(all.max.z - all.min.z, 12.0f, 1e-4f);
+  EXPECT_NEAR(all.min.y, 0.0f, 1e-5f);
+  EXPECT_NEAR(0.5f * (all.min.x + all.max.x), 0.5f, 1e-4f);
+  EXPECT_NEAR(casters.max.z - casters.min.z, 4.0f, 1e-5f);  // the ground casts nothing: the model alone
+  ASSERT_EQ(s.scene.cameras.size(), 1u);
+  EXPECT_GE(s.notes.size(), 3u);  // sun, ground, camera
+
+  o.ground = false;
+  const scenes::StagedScene bare = scenes::load_model_staged(write_box(dir, "box2", false), o);
+  EXPECT_NEAR(scenes::scene_bounds(bare.scene).max.x - scenes::scene_bounds(bare.scene).min.x, 1.0f, 1e-5f);
+}
+
+// --up z: the model's +Z becomes +Y (its 4 m side stands up) and the ground goes under the turned model.
+TEST(Stage, ZUpModelIsTurnedUpright) {
+  const auto dir = testsupport::temp_dir("stage_zup");
+  scenes::StageOptions o;
+  o.z_up = true;
+  const scenes::StagedScene s = scenes::load_model_staged(write_box(dir, "box", false), o);
+  const scenes::Aabb m = scenes::scene_bounds(s.scene, scenes::InstanceFilter::casters);
+  EXPECT_NEAR(m.max.y - m.min.y, 4.0f, 1e-5f);
+  EXPECT_NEAR(m.max.z - m.min.z, 2.0f, 1e-5f);
+  EXPECT_NEAR(m.max.x - m.min.x, 1.0f, 1e-5f);
+  EXPECT_NEAR(scenes::scene_bounds(s.scene).min.y, m.min.y, 1e-5f);  // the ground's top at the model's base
+}
+
+// A file with its own light is shown as it is: no sun and no ground; a sun below the horizon is refused.
+TEST(Stage, FileLightsAreKeptAndBadSunsRefused) {
+  const auto dir = testsupport::temp_dir("stage_lit");
+  const scenes::StagedScene s = scenes::load_model_staged(write_box(dir, "lit", true), {});
+  ASSERT_EQ(s.scene.lights.size(), 1u);
+  EXPECT_EQ(s.scene.lights[0].name, "bulb");
+  EXPECT_NEAR(scenes::scene_bounds(s.scene).max.x - scenes::scene_bounds(s.scene).min.x, 1.0f, 1e-5f);
+  scenes::StageOptions o;
+  o.sun = glm::vec2(0.0f, -10.0f);
+  EXPECT_THROW(scenes::load_model_staged(write_box(dir, "box", false), o), scenes::SceneError);
+}
