@@ -17,6 +17,14 @@ std::vector<CameraVertex> camera_vertices(const scenes::Mesh& m) {
   return v;
 }
 
+std::vector<TexturedCameraVertex> textured_vertices(const std::vector<CameraVertex>& plain, const scenes::Mesh& m) {
+  std::vector<TexturedCameraVertex> v(plain.size());
+  for (size_t i = 0; i < v.size(); ++i)
+    v[i] = TexturedCameraVertex{plain[i].position, plain[i].normal,
+                                i < m.texcoords.size() ? m.texcoords[i] : glm::vec2(0.0f)};
+  return v;
+}
+
 raster::DrawState camera_instance(const scenes::Scene& scene, size_t index, SurfaceUniforms& u) {
   const scenes::Instance& inst = scene.instances[index];
   const scenes::Material& mat = scene.materials.at(inst.material);
@@ -30,8 +38,10 @@ raster::DrawState camera_instance(const scenes::Scene& scene, size_t index, Surf
   return s;
 }
 
-shading::tech::CameraSurface camera_surface(const scenes::Scene& scene, const glm::mat4& view_proj, glm::vec3 eye,
-                                            int width, int height, raster::Renderer& renderer) {
+shading::tech::CameraSurface camera_surface(const scenes::Scene& scene,
+                                            std::span<const shading::SurfaceTexture> surfaces,
+                                            const glm::mat4& view_proj, glm::vec3 eye, int width, int height,
+                                            raster::Renderer& renderer) {
   SurfaceRecord record(width, height, 0);
   raster::DepthTarget depth(width, height, raster::DepthFormat::d24);
   depth.clear(1.0f);
@@ -42,15 +52,26 @@ shading::tech::CameraSurface camera_surface(const scenes::Scene& scene, const gl
   shader.u.view_proj = view_proj;
   shader.u.eye = eye;
   std::vector<std::vector<CameraVertex>> mesh_vertices(scene.meshes.size());
+  std::vector<std::vector<TexturedCameraVertex>> mesh_textured(scene.meshes.size());  // masked draws only
+  const raster::RenderTargets targets{&depth, &color};
   for (size_t index = 0; index < scene.instances.size(); ++index) {
     const scenes::Instance& inst = scene.instances[index];
-    // As the camera pass: an instance whose material hides every fragment is not drawn.
-    if (scenes::coverage(scene.materials.at(inst.material)) == scenes::Coverage::hidden) continue;
-    if (mesh_vertices[inst.mesh].empty()) mesh_vertices[inst.mesh] = camera_vertices(scene.meshes.at(inst.mesh));
+    const scenes::Mesh& mesh = scene.meshes.at(inst.mesh);
+    // As the camera pass: an instance whose material hides every fragment is not drawn, and a masked one
+    // discards where its texture's alpha is below the cutoff (the same shader, so the same fragments).
+    const scenes::Coverage coverage = scenes::coverage(scene.materials.at(inst.material));
+    if (coverage == scenes::Coverage::hidden) continue;
+    if (mesh_vertices[inst.mesh].empty()) mesh_vertices[inst.mesh] = camera_vertices(mesh);
     const raster::DrawState s = camera_instance(scene, index, shader.u);
-    renderer.draw(raster::RenderTargets{&depth, &color}, s, shader,
-                  std::span<const CameraVertex>(mesh_vertices[inst.mesh]),
-                  std::span<const uint32_t>(scene.meshes.at(inst.mesh).indices));
+    const std::span<const uint32_t> indices(mesh.indices);
+    const shading::SurfaceTexture& surface = surfaces[inst.material];
+    if (coverage == scenes::Coverage::masked && surface.texture) {
+      if (mesh_textured[inst.mesh].empty()) mesh_textured[inst.mesh] = textured_vertices(mesh_vertices[inst.mesh], mesh);
+      renderer.draw(targets, s, BasicCameraShader<true, true>{shader.u, shader.lights, shader.record, &surface},
+                    std::span<const TexturedCameraVertex>(mesh_textured[inst.mesh]), indices);
+    } else {
+      renderer.draw(targets, s, shader, std::span<const CameraVertex>(mesh_vertices[inst.mesh]), indices);
+    }
   }
   shading::tech::CameraSurface out;
   out.width = width, out.height = height;

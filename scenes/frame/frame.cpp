@@ -33,14 +33,6 @@ double ms_since(Clock::time_point t) { return std::chrono::duration<double, std:
 
 tech::Box to_box(const scenes::Aabb& a) { return tech::Box{a.min, a.max}; }
 
-std::vector<TexturedCameraVertex> textured_vertices(const std::vector<CameraVertex>& plain, const scenes::Mesh& m) {
-  std::vector<TexturedCameraVertex> v(plain.size());
-  for (size_t i = 0; i < v.size(); ++i)
-    v[i] = TexturedCameraVertex{plain[i].position, plain[i].normal,
-                                i < m.texcoords.size() ? m.texcoords[i] : glm::vec2(0.0f)};
-  return v;
-}
-
 // The casters of every depth pass, flattened once per frame: opaque triangles in one soup, masked ones per
 // material with their alpha test (tech::CasterGeometry); instances whose material hides them entirely are left
 // out.
@@ -212,7 +204,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
           inputs->objects.push_back({to_box(scenes::instance_bounds(scene, k)), scene.instances[k].casts_shadows,
                                      scene.instances[k].receives_shadows});
         inputs->surface = [&]() -> const tech::CameraSurface& {
-          if (!surface) surface = camera_surface(scene, view_proj, camera.position, config.width, config.height, renderer);
+          if (!surface) surface = camera_surface(scene, surfaces, view_proj, camera.position, config.width, config.height, renderer);
           return *surface;
         };
       }

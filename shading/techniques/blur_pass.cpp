@@ -103,7 +103,7 @@ struct BlurShader : FullScreenShader<BlurShader<kChannels, kVertical>> {
 
 void check_float_target(const raster::ColorTarget& t, const char* what) {
   if (t.format() != raster::ColorFormat::rgba32f)
-    throw std::invalid_argument(std::string(what) + ": the filterable map passes need an rgba32f target");
+    throw std::logic_error(std::string(what) + ": the filterable map passes need an rgba32f target");
 }
 
 template <int kChannels>
@@ -130,9 +130,9 @@ raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::Depth
   check_float_target(out, "encode_moments");
   if (region.x < 0 || region.y < 0 || region.width < 1 || region.height < 1 ||
       region.x + region.width > src.width() || region.y + region.height > src.height())
-    throw std::invalid_argument("encode_moments: the region lies outside the depth map");
+    throw std::logic_error("encode_moments: the region lies outside the depth map");
   if (out.width() != region.width || out.height() != region.height)
-    throw std::invalid_argument("encode_moments: the moment target must have the region's size");
+    throw std::logic_error("encode_moments: the moment target must have the region's size");
   EncodeShader s;
   s.src = &src, s.region = region, s.depth = depth, s.params = p;
   return draw_full_screen(renderer, out, s);
@@ -142,15 +142,15 @@ raster::DrawStats blur_pass(raster::Renderer& renderer, const raster::ColorTarge
                             int radius, int channels, bool vertical) {
   check_float_target(src, "blur_pass");
   check_float_target(dst, "blur_pass");
-  if (&src == &dst) throw std::invalid_argument("blur_pass: source and destination must differ");
+  if (&src == &dst) throw std::logic_error("blur_pass: source and destination must differ");
   if (src.width() != dst.width() || src.height() != dst.height())
-    throw std::invalid_argument("blur_pass: source and destination must have the same size");
-  if (radius < 0 || radius > 16) throw std::invalid_argument("blur_pass: radius outside 0..16");
+    throw std::logic_error("blur_pass: source and destination must have the same size");
+  if (radius < 0 || radius > 16) throw std::logic_error("blur_pass: radius outside 0..16");
   switch (channels) {
     case 1: return blur_with<1>(renderer, src, dst, radius, vertical);
     case 2: return blur_with<2>(renderer, src, dst, radius, vertical);
     case 4: return blur_with<4>(renderer, src, dst, radius, vertical);
-    default: throw std::invalid_argument("blur_pass: channels must be 1, 2 or 4");
+    default: throw std::logic_error("blur_pass: channels must be 1, 2 or 4");
   }
 }
 

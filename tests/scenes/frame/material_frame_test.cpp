@@ -370,3 +370,37 @@ TEST(MaterialFrame, GltfMaterialImportsMaskTexCoordAndTransform) {
   EXPECT_NEAR(st.x, 0.6f, 1e-6f);
   EXPECT_NEAR(st.y, 0.85f, 1e-6f);
 }
+
+// The irregular z-buffer shades the camera's own samples, found by a pre-pass (camera_surface.h) that must
+// alpha-test masked materials as the camera pass does: looking straight down through the leaf's cut-out corners
+// at a floor shadowed by an opaque plate below the leaf (the leaf itself lies in sunlight), every floor pixel seen
+// through the cut-outs is in the plate's shadow. A pre-pass that drew the card whole would test the leaf's
+// sunlit points instead and light them all.
+TEST(MaterialFrame, IrregularSeesThroughMaskedReceivers) {
+  const fs::path tex = disc_texture("material_irregular_receiver");
+  raster::Renderer renderer(testsupport::test_threads());
+  scenes::Scene s = leaf_scene(tex, scenes::AlphaMode::mask, tech::LightType::directional, tech::Technique::irregular);
+  // The plate at y = 1 over x in [1.5, 3.5]: its shadow on the floor, shifted by 1.5 m against the sun's x,
+  // covers x in [0, 2] (z in [-2, 2]); the leaf's disc shadow falls near x = -3, out of view.
+  s.objects.push_back("plate");
+  s.meshes.push_back(quad({1.5f, 1.0f, 2.0f}, {3.5f, 1.0f, 2.0f}, {3.5f, 1.0f, -2.0f}, {1.5f, 1.0f, -2.0f}, 4));
+  scenes::Material plate;
+  plate.name = "plate";
+  plate.double_sided = true;
+  s.materials.push_back(plate);
+  s.instances.push_back(scenes::Instance{"plate", 2, 2, 2, glm::mat4(1.0f), true, false});
+  s.cameras[0].position = {0, 10, 0};
+  s.cameras[0].target = {0, 0, 0};
+  const frame::Frame f = frame::render_frame(s, view_config(), renderer);
+  const frame::SurfaceRecord& r = *f.surface;
+  size_t through = 0, lit = 0;
+  for (size_t p = 0; p < r.pixels(); ++p) {
+    const glm::vec3 q = r.position[p];
+    // Floor pixels under the card (seen through its cut-outs), well inside the plate's shadow (x in [0.1, 0.9]).
+    if (!r.covered[p] || std::abs(q.y) > 1e-3f || q.x < 0.1f || q.x > 0.9f || std::abs(q.z) > 0.9f) continue;
+    ++through;
+    lit += r.visibility[p] >= 0.5f;
+  }
+  EXPECT_GT(through, 1000u);  // the cut-out corners show this much floor at 480² over 3.6 m
+  EXPECT_EQ(lit, 0u) << "of " << through << " floor pixels seen through the leaf's cut-outs";
+}
