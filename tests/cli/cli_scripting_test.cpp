@@ -341,8 +341,14 @@ TEST_F(CliScripting, LightPicksOneLightByNameOrIndex) {
   testsupport::expect_bad_run(dir, "render two.json --light rim --out x.png", "--light", "x.png");
   testsupport::expect_bad_run(dir, "render two.json --light 2 --out x.png", "--light", "x.png");
   testsupport::expect_bad_run(dir, "eval two.json --light rim --size 16x16 --out ev", "--light", "ev");
+  // A value given on the command line is named by its option; one from the file by the light's place there.
   testsupport::expect_bad_run(dir, "render '" + lights + "' --light lamp --split-plane q --out x.png",
-                              "lights[2].shadow.params.split_plane", "x.png");
+                              "--split-plane", "x.png");
+  const std::string bulb = R"({"name": "bulb", "type": "point", "position": [0, 3, 0], "intensity": 100,
+      "shadow": {"technique": "paraboloid", "params": {"split_plane": "q"}}})";
+  std::ofstream(dir / "three.json") << "{" << objects << R"(, "lights": [)" << key << ", " << fill << ", " << bulb << "]}";
+  testsupport::expect_bad_run(dir, "render three.json --light bulb --out x.png", "lights[2].shadow.params.split_plane",
+                              "x.png");
 }
 
 // The README's quick start, run as written (the binary path mapped to this build's).
