@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates every picture in README.md and docs/ from the current build: the README's frame and map, the
 # tutorial steps (tutorial_pictures.sh), the directional contact sheets (bench/directional_report.sh), the
-# filtered-shadow frames and contact sheets, and the omnidirectional caster pictures. Needs oiiotool; the forest
+# filtered-shadow frames and contact sheets, the omnidirectional caster pictures and the projective variants. Needs oiiotool; the forest
 # sheet needs ../shared/assets (skipped, said on stderr, without it). Run from the repository root:
 #   docs/scripts/pictures.sh [path/to/shadowlab]   (default: build/cli/shadowlab)
 set -euo pipefail
@@ -53,4 +53,17 @@ oiiotool "$work/par/light0-lamp.exr" --ch Z --mulc 3 --clamp:min=0:max=1 --resiz
   -o "$work/par-map.png"
 oiiotool "$work/pyr-map.png" "$work/par-map.png" --mosaic 2x1 -o "$img/omni/caster-maps.png"
 oiiotool "$work/pyr.png" "$work/par.png" --mosaic 2x1 -o "$img/omni/caster-shadows.png"
+# docs/projective.md: caster selection from close up, and the article's blur and fade beside today's choices
+# (the blur row at 64² maps so the texels show, the fade row over 1.8 … 3 m behind each caster).
+mkdir -p "$img/projective"
+"$bin" render projective --camera orbit:180,10,3 --caster-reach 10 --size 400x225 --out "$img/projective-caster-reach.png"
+view=(projective --camera orbit:200,45,1.8 --size 320x180)
+"$bin" render "${view[@]}" --shadow-size 64 --out "$img/projective/blur-none.png"
+"$bin" render "${view[@]}" --shadow-size 64 --lod-bias 2 --out "$img/projective/blur-lod-bias.png"
+"$bin" render "${view[@]}" --shadow-size 64 --blur-passes 3 --out "$img/projective/blur-offset.png"
+"$bin" render "${view[@]}" --out "$img/projective/fade-none.png"
+fade=(--fade-start 1.8 --fade-end 3)
+"$bin" render "${view[@]}" "${fade[@]}" --out "$img/projective/fade-formula.png"
+"$bin" render "${view[@]}" "${fade[@]}" --fade-lookup texture --fade-table smoothstep --out "$img/projective/fade-smoothstep.png"
+"$bin" render "${view[@]}" "${fade[@]}" --fade-lookup texture --fade-table 1,1,0.25,0.25 --out "$img/projective/fade-table.png"
 echo "pictures.sh: regenerated the pictures under $img"
