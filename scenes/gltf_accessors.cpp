@@ -67,6 +67,12 @@ float as_float(const unsigned char* p, int type, bool normalized) {
 // Larger accessors are rejected before anything is allocated (2^28 elements: 3 GiB of VEC3 floats).
 constexpr size_t kMaxElements = size_t(1) << 28;
 
+// An accessor without a bufferView is all zeros (plus its sparse values): its count costs the file nothing and
+// the reader count × element bytes. It may hold no more elements than the file's buffers hold bytes (a mesh's
+// real attributes fit in its buffers, so zeros beside them do too), or 65,536 in a file with smaller buffers;
+// beyond that a few bytes of JSON would make the reader allocate gigabytes.
+constexpr size_t kMinZeroElements = size_t(1) << 16;
+
 uint32_t as_uint(const unsigned char* p, int type) {
   switch (type) {
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return load<uint8_t>(p);
@@ -131,6 +137,13 @@ void AccessorReader::read(int index, const std::string& key, int type, Want want
       stride = model_.bufferViews[size_t(a.bufferView)].byteStride;
     if (stride < element) fail(where, "byteStride " + std::to_string(stride) + " is smaller than an element");
     p = span_of(a.bufferView, a.byteOffset, stride, a.count, element, where);
+  } else {
+    size_t buffer_bytes = 0;
+    for (const tinygltf::Buffer& b : model_.buffers) buffer_bytes += b.data.size();
+    const size_t bound = std::max(buffer_bytes, kMinZeroElements);
+    if (a.count > bound)
+      fail(where, "count " + std::to_string(a.count) + " without a bufferView exceeds " + std::to_string(bound) +
+                      " (the elements an accessor of zeros may have: the file's buffer bytes, at least 65536)");
   }
   const size_t sparse = a.sparse.isSparse && a.sparse.count > 0 ? size_t(a.sparse.count) : 0;
   const int it = a.sparse.indices.componentType;

@@ -80,6 +80,9 @@ def chain(d):
 put("fuzz_gltf", "chain.gltf", json.dumps(gltf_doc(data, uri, chain)))
 put("fuzz_gltf", "count0.gltf", json.dumps(gltf_doc(data, uri, count=0)))
 put("fuzz_gltf", "count_huge.gltf", json.dumps(gltf_doc(data, uri, count=1 << 28)))
+# The campaign's find: the same count on an accessor without a bufferView (all zeros) allocated 3 GiB.
+zeros = gltf_doc(data, uri, count=1 << 28); del zeros["accessors"][0]["bufferView"]
+put("fuzz_gltf", "zeros_count_huge.gltf", json.dumps(zeros))
 zero = gltf_doc(data); zero["buffers"][0]["byteLength"] = 0
 put("fuzz_gltf", "zero_buffer.glb", glb(zero, data))
 nan = struct.pack("<9f", float("nan"), 0, 0, float("inf"), 0, 0, 0, -1e38, 0) + idx + b"\0\0"

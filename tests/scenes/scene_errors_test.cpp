@@ -185,6 +185,17 @@ TEST(SceneErrors, BrokenGltf) {
     f.doc["accessors"][0]["count"] = 0;
     EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "zero_count")); }),
               d + "/zero_count.gltf: meshes[0].primitives[0]: empty mesh (no triangles)");
+    // Found by fuzz_gltf's campaign: an accessor without a bufferView (all zeros, legal glTF) claiming 2^28
+    // elements allocated 3 GiB before any check. Zeros may number at most the file's buffer bytes (here 36), or
+    // 65,536; a small one still loads (a degenerate triangle at the origin).
+    f.doc["accessors"][0]["count"] = 1 << 28;
+    f.doc["accessors"][0].erase("bufferView");
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "zeros_huge")); }),
+              d + "/zeros_huge.gltf: meshes[0].primitives[0].attributes.POSITION (accessors[0]): count 268435456 "
+                  "without a bufferView exceeds 65536 (the elements an accessor of zeros may have: the file's buffer "
+                  "bytes, at least 65536)");
+    f.doc["accessors"][0]["count"] = 3;
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "zeros_small")); }), "");
   }
   {
     // Issue 23: node i lists node i + 1 twice (a DAG): 2^n paths before; now refused at once.
