@@ -96,9 +96,16 @@ void check_exr_header(const std::filesystem::path& path) {
       } else if (type == "preview") {  // width, height, then 4 bytes per pixel, allocated at once
         uint32_t w, h;
         if (!read_u32(in, w) || !read_u32(in, h)) return;
-        const int64_t pixels = 4 * int64_t(w) * int64_t(h), rest = file_size - int64_t(in.tellg());
-        if (pixels > rest) refuse(name, type, 8 + pixels, left);
-        in.seekg(pixels, std::ios::cur);
+        // w · h fits 64 bits unsigned ((2³² − 1)² < 2⁶⁴); 4 bytes a pixel may not, so compare pixels first.
+        const uint64_t pixels = uint64_t(w) * uint64_t(h);
+        const int64_t rest = file_size - int64_t(in.tellg());
+        if (rest < 0 || pixels > uint64_t(rest) / 4) {
+          if (pixels <= uint64_t(INT64_MAX - 8) / 4) refuse(name, type, 8 + 4 * int64_t(pixels), left);
+          throw IoError(path, "header attribute '" + name + "' (" + type + ") declares a " + std::to_string(w) +
+                                  " x " + std::to_string(h) + " preview, more than the " + std::to_string(left) +
+                                  " bytes left in the file");
+        }
+        in.seekg(int64_t(pixels) * 4, std::ios::cur);
       } else {  // string, stringvector, floatvector, idmanifest, bytes and unknown types: `size` bytes
         in.seekg(size, std::ios::cur);
       }

@@ -3,6 +3,7 @@
 # every pixel type and layout the readers meet (FLOAT / HALF / UINT, scanline and tiled, Z alone, RGBA, a depth
 # layer), PNG frames (8- and 16-bit, grey, RGBA), plus issue 23's header reproducers. SHADOWLAB=path/to/shadowlab
 # adds real maps with passes (cube faces, cascades). Deterministic apart from the tools' own versions.
+# Kept as found, not written here: fuzz_exr_map/preview_overflow.exr, the campaign's preview-size overflow (io_exr_test).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 exr=$here/corpus/fuzz_exr_map

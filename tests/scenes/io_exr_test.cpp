@@ -292,6 +292,33 @@ TEST(IoExr, AnAttributeLargerThanTheFileIsRefusedBeforeReading) {
   }
 }
 
+// Found by fuzz_exr_map's campaign: a preview attribute declaring 2³² − 1 × 2³² − 1 pixels overflowed the size
+// computation (4 · w · h in 64-bit signed arithmetic, undefined behaviour under UBSan) before the check against
+// the file. It is refused naming the preview's size; a smaller impossible preview names its byte count.
+TEST(IoExr, APreviewLargerThanTheFileIsRefusedWithoutOverflow) {
+  const fs::path dir = testsupport::temp_dir("io_exr_huge_preview");
+  const std::string bytes = small_map_bytes(dir);
+  auto preview = [&](uint32_t w, uint32_t h) {
+    std::string a = std::string("thumb\0preview\0", 14);
+    const uint32_t size = 8;
+    a.append(reinterpret_cast<const char*>(&size), 4);
+    a.append(reinterpret_cast<const char*>(&w), 4);
+    a.append(reinterpret_cast<const char*>(&h), 4);
+    const fs::path file = dir / ("preview_" + std::to_string(w) + "x" + std::to_string(h) + ".exr");
+    put(file, bytes.substr(0, 8) + a + bytes.substr(8));
+    try {
+      scenes::io::exr_channel_names(file);
+    } catch (const IoError& e) {
+      return std::string(e.what()).substr(file.string().size());
+    }
+    return std::string("no exception");
+  };
+  EXPECT_EQ(preview(0xffffffffu, 0xffffffffu).rfind(": header attribute 'thumb' (preview) declares a 4294967295 x "
+                                                    "4294967295 preview, more than the ", 0), 0u);
+  EXPECT_EQ(preview(1000, 1000).rfind(": header attribute 'thumb' (preview) declares 4000008 bytes, more than the ", 0),
+            0u);
+}
+
 // A data window wider than any map (100000 × 4) over a file of a few hundred bytes: OpenEXR refuses it from
 // the header, under the 65536-a-side limit check_exr_header sets (read_exr_map's own check, 65536 a side and
 // 2^30 values, stands behind it for files whose line-offset table holds up).
