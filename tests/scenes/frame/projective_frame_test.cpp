@@ -190,12 +190,11 @@ TEST(ProjectiveFrame, MultipassEqualsSinglePass) {
   EXPECT_GT(max_difference(multi.color, frame::render_frame(scene, o, r).color), 50);
 }
 
-// Golden hash of the built-in `projective` scene at 320 × 180 (time 0, 256² maps per caster).
-constexpr uint64_t kGolden = 0x918d2c965ebee2d3ull;
-
-TEST(ProjectiveFrame, GoldenBuiltinSceneAcrossThreadCounts) {
-  const scenes::Scene scene = scenes::builtin_scene("projective");
+// Renders `scene` at 320 × 180 at 0, 1 and 2 threads in both modes and expects one hash; returns that of the
+// first frame (0 threads, multipass), dumped as golden `dump_name` when one is given.
+uint64_t same_frame_at_every_thread_count(const scenes::Scene& scene, const char* dump_name = nullptr) {
   uint64_t first = 0;
+  bool have_first = false;
   for (int threads : {0, 1, 2}) {
     for (const char* mode : {"multipass", "single-pass"}) {
       raster::Renderer r(threads);
@@ -203,13 +202,21 @@ TEST(ProjectiveFrame, GoldenBuiltinSceneAcrossThreadCounts) {
       o.params["projective_mode"] = std::string(mode);
       const frame::Frame f = frame::render_frame(scene, o, r);
       const uint64_t h = testsupport::frame_hash(f.color);
-      if (threads == 0 && std::string(mode) == "multipass") {
-        first = h;
-        testsupport::dump_golden(f.color, "projective");
+      if (!have_first) {
+        first = h, have_first = true;
+        if (dump_name) testsupport::dump_golden(f.color, dump_name);
       }
       EXPECT_EQ(h, first) << "threads " << threads << " " << mode;
     }
   }
+  return first;
+}
+
+// Golden hash of the built-in `projective` scene at 320 × 180 (time 0, 256² maps per caster).
+constexpr uint64_t kGolden = 0x918d2c965ebee2d3ull;
+
+TEST(ProjectiveFrame, GoldenBuiltinSceneAcrossThreadCounts) {
+  const uint64_t first = same_frame_at_every_thread_count(scenes::builtin_scene("projective"), "projective");
   testsupport::expect_golden_hash("projective", first, kGolden);
 }
 
@@ -219,17 +226,7 @@ TEST(ProjectiveFrame, OffsetBlurIsTheSameAtEveryThreadCount) {
   scenes::Scene scene = scenes::builtin_scene("projective");
   scene.lights[0].shadow.params["blur_passes"] = 2.0;
   scene.lights[0].shadow.params["blur_offset"] = 0.7;
-  uint64_t first = 0;
-  for (int threads : {0, 1, 2}) {
-    for (const char* mode : {"multipass", "single-pass"}) {
-      raster::Renderer r(threads);
-      frame::FrameConfig o = small(320, 180);
-      o.params["projective_mode"] = std::string(mode);
-      const uint64_t h = testsupport::frame_hash(frame::render_frame(scene, o, r).color);
-      if (first == 0) first = h;
-      EXPECT_EQ(h, first) << "threads " << threads << " " << mode;
-    }
-  }
+  const uint64_t first = same_frame_at_every_thread_count(scene);
   raster::Renderer r(testsupport::test_threads());
   scene.lights[0].shadow.params.erase("blur_passes");
   scene.lights[0].shadow.params.erase("blur_offset");
