@@ -388,6 +388,10 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
     if (a.animate && i > 0) scene = scenes::builtin_scene(a.scene, {double(i) / a.fps});
     progress.update(label + (a.frames > 1 ? "frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames) : "rendering"));
     const Stopwatch watch;
+    if (result) {  // its outputs are written: its targets serve the next frame
+      frame::recycle(std::move(*result), cache);
+      result.reset();
+    }
     try {
       result.emplace(frame::render_frame(scene, config, renderer, &cache, &textures));
     } catch (const frame::FrameError& e) {

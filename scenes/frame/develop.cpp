@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "raster/srgb8.h"
@@ -25,67 +27,96 @@ float highlight_limit(shading::ToneMap tone_map) {
 
 namespace {
 
-// The k-th smallest of positive finite floats (which order as their bit patterns): a histogram of the top 16 bits
-// finds the bucket holding it, and only that bucket is selected in. The value does not depend on the order of
-// `values`.
-float kth_smallest(std::span<const float> values, size_t k) {
-  std::vector<uint32_t> count(size_t(1) << 15, 0);  // the sign bit is 0
-  for (const float v : values) ++count[std::bit_cast<uint32_t>(v) >> 16];
-  size_t bucket = 0, below = 0;
-  while (below + count[bucket] <= k) below += count[bucket++];
-  std::vector<float> in_bucket;
-  in_bucket.reserve(count[bucket]);
-  for (const float v : values)
-    if (std::bit_cast<uint32_t>(v) >> 16 == bucket) in_bucket.push_back(v);
-  const auto kth = in_bucket.begin() + std::ptrdiff_t(k - below);
-  std::nth_element(in_bucket.begin(), kth, in_bucket.end());
-  return *kth;
+// Positive finite floats order as their bit patterns; their top 13 bits (the sign bit 0, the exponent and 4 bits
+// of mantissa: 1/16 of an octave) pick one of these buckets, 16 KiB of counts per band of rows.
+constexpr size_t kBuckets = size_t(1) << 12;
+uint32_t bucket_of(float v) { return std::bit_cast<uint32_t>(v) >> 19; }
+
+// A drawn pixel's luminance when it counts for metering (alpha > 0, luminance positive and finite), else 0.
+float metered_luminance(const float* p) {
+  if (!(p[3] > 0.0f)) return 0.0f;
+  const float l = shading::luminance(glm::vec3(p[0], p[1], p[2]));
+  return l > 0.0f && std::isfinite(l) ? l : 0.0f;
 }
 
 }  // namespace
 
 float metered_ev100(const raster::ColorTarget& radiance, shading::ToneMap tone_map, raster::ThreadPool& pool) {
   const int w = radiance.width(), h = radiance.height();
-  // Each row's lit luminances at the start of its own stretch of one buffer (no per-row growth), then packed
-  // down in row order.
-  std::vector<float> buffer(size_t(w) * size_t(h));
-  float* const all = buffer.data();
+  // Rows in bands, one histogram of the lit luminances per band (counts add up to the same whatever the bands),
+  // and each row's count and sum of log2 (added in row order). No copy of the values: a frame-sized buffer cost
+  // more in fresh pages than the metering itself.
+  const size_t bands = std::min(size_t(h), size_t(std::max(pool.threads(), 1)) * 2);
+  std::vector<std::vector<uint32_t>> histogram(bands);
   std::vector<size_t> count(size_t(h), 0);
   std::vector<double> log_sum(size_t(h), 0.0);
-  pool.parallel_for(size_t(h), [&](size_t y) {
-    const float* p = radiance.row32f(int(y));
-    float* out = all + y * size_t(w);
-    size_t n = 0;
-    double sum = 0.0;
-    for (int x = 0; x < w; ++x, p += 4) {
-      if (!(p[3] > 0.0f)) continue;
-      const float l = shading::luminance(glm::vec3(p[0], p[1], p[2]));
-      if (!(l > 0.0f) || !std::isfinite(l)) continue;
-      out[n++] = l;
-      sum += std::log2(double(l));
+  auto band_rows = [&](size_t b) { return std::pair(b * size_t(h) / bands, (b + 1) * size_t(h) / bands); };
+  pool.parallel_for(bands, [&](size_t b) {
+    std::vector<uint32_t>& hist = histogram[b];
+    hist.assign(kBuckets, 0);
+    const auto [y0, y1] = band_rows(b);
+    for (size_t y = y0; y < y1; ++y) {
+      const float* p = radiance.row32f(int(y));
+      size_t n = 0;
+      double sum = 0.0;
+      for (int x = 0; x < w; ++x, p += 4) {
+        const float l = metered_luminance(p);
+        if (l == 0.0f) continue;
+        ++n;
+        ++hist[bucket_of(l)];
+        sum += std::log2(double(l));
+      }
+      count[y] = n;
+      log_sum[y] = sum;
     }
-    count[y] = n;
-    log_sum[y] = sum;
   });
   size_t total = 0;
   double sum = 0.0;
-  for (size_t y = 0; y < size_t(h); ++y) {
-    const float* row = all + y * size_t(w);
-    std::copy(row, row + count[y], all + total);  // never ahead of the row it reads
-    total += count[y];
-    sum += log_sum[y];
-  }
+  for (size_t y = 0; y < size_t(h); ++y) total += count[y], sum += log_sum[y];
   if (total == 0) return 0.0f;
   const double average = std::exp2(sum / double(total));
-  const float p99 = kth_smallest(std::span<const float>(all, total), size_t(double(total - 1) * 0.99));
+
+  // The 99th percentile: the bucket holding the k-th smallest, then only that bucket's values selected in (the
+  // k-th value does not depend on the order they are gathered in).
+  const size_t k = size_t(double(total - 1) * 0.99);
+  size_t bucket = 0, below = 0;
+  for (;; ++bucket) {
+    size_t in = 0;
+    for (const std::vector<uint32_t>& hist : histogram) in += hist[bucket];
+    if (below + in > k) break;
+    below += in;
+  }
+  std::vector<std::vector<float>> gathered(bands);
+  pool.parallel_for(bands, [&](size_t b) {
+    gathered[b].reserve(histogram[b][bucket]);
+    const auto [y0, y1] = band_rows(b);
+    for (size_t y = y0; y < y1; ++y) {
+      const float* p = radiance.row32f(int(y));
+      for (int x = 0; x < w; ++x, p += 4)
+        if (const float l = metered_luminance(p); l != 0.0f && bucket_of(l) == bucket) gathered[b].push_back(l);
+    }
+  });
+  std::vector<float> in_bucket;
+  for (const std::vector<float>& g : gathered) in_bucket.insert(in_bucket.end(), g.begin(), g.end());
+  const auto kth = in_bucket.begin() + std::ptrdiff_t(k - below);
+  std::nth_element(in_bucket.begin(), kth, in_bucket.end());
+  const float p99 = *kth;
   return std::max(shading::ev100_mapping(average, 0.18),
                   shading::ev100_mapping(double(p99), double(highlight_limit(tone_map))));
 }
 
 raster::ColorTarget develop(const raster::ColorTarget& radiance, float ev100, shading::ToneMap tone_map,
                             const scenes::Background& background, raster::ThreadPool& pool) {
+  raster::ColorTarget out(radiance.width(), radiance.height(), raster::ColorFormat::rgba8, true);
+  develop_into(out, radiance, ev100, tone_map, background, pool);
+  return out;
+}
+
+void develop_into(raster::ColorTarget& out, const raster::ColorTarget& radiance, float ev100,
+                  shading::ToneMap tone_map, const scenes::Background& background, raster::ThreadPool& pool) {
   const int w = radiance.width(), h = radiance.height();
-  raster::ColorTarget out(w, h, raster::ColorFormat::rgba8, true);
+  if (out.width() != w || out.height() != h || out.format() != raster::ColorFormat::rgba8 || !out.srgb())
+    throw std::invalid_argument("develop_into: the picture must be an sRGB RGBA8 target of the radiance's size");
   const float scale = shading::exposure_scale(ev100);
   // The bytes ColorTarget::write stores into this sRGB target, without its pow per channel (raster/srgb8.h).
   const raster::Srgb8Encoder srgb8;
@@ -108,7 +139,6 @@ raster::ColorTarget develop(const raster::ColorTarget& radiance, float ev100, sh
       q[0] = srgb8(v.r), q[1] = srgb8(v.g), q[2] = srgb8(v.b), q[3] = 255;  // alpha 1: not encoded
     }
   });
-  return out;
 }
 
 }  // namespace frame

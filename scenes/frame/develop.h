@@ -25,5 +25,9 @@ float highlight_limit(shading::ToneMap tone_map);
 // thread count.
 raster::ColorTarget develop(const raster::ColorTarget& radiance, float ev100, shading::ToneMap tone_map,
                             const scenes::Background& background, raster::ThreadPool& pool);
+// The same into `out` (an sRGB RGBA8 target of the radiance's size, else std::invalid_argument), every pixel of
+// it written: a picture reused from an earlier frame needs no clearing.
+void develop_into(raster::ColorTarget& out, const raster::ColorTarget& radiance, float ev100,
+                  shading::ToneMap tone_map, const scenes::Background& background, raster::ThreadPool& pool);
 
 }  // namespace frame

@@ -160,8 +160,17 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   const float given_ev100 = config.exposure.value_or(scene.look.exposure).ev100.value_or(0.0f);
   if (!std::isfinite(given_ev100) || std::abs(given_ev100) > 64.0f)
     throw FrameError("exposure: EV100 " + std::to_string(given_ev100) + " is outside -64..64");
-  Frame frame{raster::ColorTarget(1, 1, raster::ColorFormat::rgba8, true),
-              raster::ColorTarget(config.width, config.height, raster::ColorFormat::rgba32f)};
+  // The picture and radiance a recycled frame left in the cache when their size fits, else new ones.
+  auto reuse = [&](std::optional<raster::ColorTarget>* kept, raster::ColorFormat format) {
+    if (kept && *kept && (*kept)->width() == config.width && (*kept)->height() == config.height) {
+      raster::ColorTarget t = std::move(**kept);
+      kept->reset();
+      return t;
+    }
+    return raster::ColorTarget(config.width, config.height, format, format == raster::ColorFormat::rgba8);
+  };
+  Frame frame{reuse(cache ? &cache->picture : nullptr, raster::ColorFormat::rgba8),
+              reuse(cache ? &cache->radiance : nullptr, raster::ColorFormat::rgba32f)};
 
   // ---- Shadow maps, light by light, through the registry.
   const auto t_shadow = Clock::now();
@@ -237,8 +246,12 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   std::vector<LightRecord> records;
   for (size_t i = 0; i < frame.lights.size(); ++i) records.push_back({resolved[i].light, frame.lights[i].shadow.get()});
 
-  raster::DepthTarget depth(config.width, config.height, raster::DepthFormat::d24);
-  depth.clear(1.0f);
+  std::optional<raster::DepthTarget> own_depth;
+  std::optional<raster::DepthTarget>& depth_slot = cache ? cache->camera_depth : own_depth;
+  if (!depth_slot || depth_slot->width() != config.width || depth_slot->height() != config.height)
+    depth_slot.emplace(config.width, config.height, raster::DepthFormat::d24);
+  raster::DepthTarget& depth = *depth_slot;
+  depth.clear(1.0f);                      // pending: each tile is cleared by the draw that first touches it
   frame.radiance.clear(glm::vec4(0.0f));  // alpha 0: the background shows
   std::vector<std::vector<CameraVertex>> mesh_vertices(scene.meshes.size());
   std::vector<std::vector<TexturedCameraVertex>> mesh_textured(scene.meshes.size());  // textured draws only
@@ -284,13 +297,18 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   const scenes::Exposure exposure = config.exposure.value_or(scene.look.exposure);
   const shading::ToneMap tone_map = config.tone_map.value_or(scene.look.tone_map);
   frame.ev100 = exposure.ev100 ? *exposure.ev100 : metered_ev100(frame.radiance, tone_map, renderer.pool());
-  frame.color = develop(frame.radiance, frame.ev100, tone_map, config.background.value_or(scene.look.background),
-                        renderer.pool());
+  develop_into(frame.color, frame.radiance, frame.ev100, tone_map,
+               config.background.value_or(scene.look.background), renderer.pool());
   frame.stats.camera_ms = ms_since(t_camera);
   if (config.aliasing)
     frame.aliasing = measure_aliasing(scene, view_proj, records, mesh_vertices, depth, renderer);
   frame.stats.projective = frame.projective.stats;
   return frame;
+}
+
+void recycle(Frame&& frame, FrameCache& cache) {
+  cache.radiance.emplace(std::move(frame.radiance));
+  cache.picture.emplace(std::move(frame.color));
 }
 
 std::vector<NamedMap> export_maps(const Frame& frame) {

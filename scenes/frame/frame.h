@@ -102,6 +102,10 @@ struct Frame {
 Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster::Renderer& renderer,
                    FrameCache* cache = nullptr, const scenes::io::SceneTextures* textures = nullptr);
 
+// Hands a frame's radiance and picture to `cache` once the caller is done with it, for the next render_frame
+// with that cache to reuse (see FrameCache); the rest of the frame is released.
+void recycle(Frame&& frame, FrameCache& cache);
+
 // A shadow map ready for write_exr_map, with its file stem ("light0-sun", "light2-lamp-caster1-box").
 struct NamedMap {
   std::string name;

@@ -35,6 +35,11 @@ struct ProjectiveStats {
 struct FrameCache {
   shading::tech::ProjectiveCache projective;
   std::map<size_t, shading::tech::FitMemory> fits;  // by light index
+  // The camera pass's targets, reused by the next frame of the same size instead of allocated again (fresh pages
+  // are zeroed by the kernel, which cost as much as the shading at 1280×720): its depth buffer, and the radiance
+  // and picture of a frame handed back with recycle() (frame.h).
+  std::optional<raster::DepthTarget> camera_depth;
+  std::optional<raster::ColorTarget> radiance, picture;
 };
 
 // One caster's map as the camera pass applies it.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -207,4 +208,33 @@ TEST(Develop, MeteringIsExactlyThePlainComputation) {
       EXPECT_EQ(frame::metered_ev100(r, t, pool), expected);
     }
   }
+}
+
+// A frame handed back to the cache (frame::recycle) lends its radiance and picture to the next frame of its size:
+// that frame is byte for byte the one rendered into fresh targets, even after a frame of another size and with
+// the old contents still there (a brighter lamp, then the gradient again).
+TEST(Develop, RecycledTargetsGiveTheSameFrame) {
+  const scenes::Scene scene = gradient_scene();
+  scenes::Scene bright = scene;
+  bright.lights[0].intensity = 50000.0f;
+  raster::Renderer renderer(testsupport::test_threads());
+  frame::FrameConfig config;
+  config.width = 96, config.height = 54;
+  const frame::Frame fresh = frame::render_frame(scene, config, renderer);
+  frame::FrameCache cache;
+  frame::FrameConfig other = config;
+  other.width = 64;
+  frame::recycle(frame::render_frame(scene, other, renderer, &cache), cache);  // another size: not reused
+  frame::recycle(frame::render_frame(bright, config, renderer, &cache), cache);
+  ASSERT_TRUE(cache.radiance && cache.picture);
+  const float* kept = cache.radiance->row32f(0);
+  const frame::Frame again = frame::render_frame(scene, config, renderer, &cache);
+  EXPECT_EQ(again.radiance.row32f(0), kept);  // the same storage, cleared and drawn again
+  EXPECT_FALSE(cache.radiance || cache.picture);
+  for (int y = 0; y < config.height; ++y) {
+    EXPECT_TRUE(std::equal(fresh.color.row8(y), fresh.color.row8(y) + config.width * 4, again.color.row8(y))) << y;
+    EXPECT_TRUE(std::equal(fresh.radiance.row32f(y), fresh.radiance.row32f(y) + config.width * 4,
+                           again.radiance.row32f(y), [](float a, float b) { return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b); })) << y;
+  }
+  EXPECT_EQ(again.ev100, fresh.ev100);
 }
