@@ -2,9 +2,11 @@
 // in candela (point, spot) or lux (directional); what the camera pass computes is luminance (cd/m²), which the
 // frame's exposure and tone map (tone_map.h) turn into a picture. Lambert diffuse + Blinn-Phong specular, both
 // divided by π (a white Lambertian surface facing E lux has luminance E / π), attenuated by distance (inverse
-// square with glTF's range window) and by the spot cone (glTF's recommended falloff), plus an ambient term: a
-// fraction of the light's illuminance taken as arriving from every direction (no cone, no n·l, no shadow). The
-// shadow term scales only the direct light, never the ambient.
+// square with glTF's range window) and by the spot cone (glTF's recommended falloff), plus an ambient term, an
+// illuminance taken as arriving at every point from every direction (no cone, no n·l, no distance, no shadow):
+// for a point or spot light its flux spread over the scene (Light::ambient, set by the frame:
+// scenes/frame/frame_lights.h), for a directional light a fraction of its own (Material::ambient). The shadow
+// term scales only the direct light, never the ambient.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -28,11 +30,15 @@ struct Light {
   float range = 0.0f;        // distance where the light has faded to 0; 0 means unlimited
   float inner_angle = 0.5f;  // spot: full intensity inside this half-angle
   float outer_angle = 0.6f;  // spot: no light beyond this half-angle
+  // Point and spot: the ambient illuminance (lux), the same at every point; a frame sets it to the light's flux
+  // spread over the surface of the scene's bounds (frame::ambient_illuminance). 0: none. Unused by directional
+  // lights, whose ambient is Material::ambient of their illuminance.
+  float ambient = 0.0f;
 };
 
 struct Material {
   glm::vec3 albedo{0.8f};
-  float ambient = 0.1f;     // fraction of each light's illuminance that reaches the point from everywhere
+  float ambient = 0.1f;     // a directional light's ambient: this fraction of its illuminance (sky and bounce)
   float specular = 0.25f;   // Blinn-Phong specular strength (white highlights)
   float shininess = 32.0f;  // Blinn-Phong exponent
 };
@@ -61,11 +67,13 @@ inline float spot_attenuation(float cos_angle, float inner_angle, float outer_an
 }
 
 // The light reaching point p: unit direction towards the light (L), the illuminance on a surface facing the light
-// (colour · intensity · distance and cone attenuation, lux) and the illuminance without the cone (the ambient's).
+// (colour · intensity · distance and cone attenuation, lux) and the ambient's illuminance: colour · Light::ambient
+// for point and spot lights, the light's whole illuminance for a directional one (Material::ambient of it counts).
 struct LightSample {
   glm::vec3 to_light{0.0f, 1.0f, 0.0f};
   glm::vec3 illuminance{0.0f};
   glm::vec3 ambient{0.0f};
+  bool directional = false;
 };
 
 inline LightSample sample_light(const Light& light, glm::vec3 p) {
@@ -73,13 +81,14 @@ inline LightSample sample_light(const Light& light, glm::vec3 p) {
   if (light.type == LightType::directional) {
     s.to_light = -light.direction;
     s.illuminance = s.ambient = light.color * light.intensity;
+    s.directional = true;
     return s;
   }
   const glm::vec3 d = light.position - p;
   const float dist = glm::length(d);
   s.to_light = dist > 0.0f ? d / dist : glm::vec3(0.0f, 1.0f, 0.0f);
   const float att = light.intensity * distance_attenuation(dist, light.range);
-  s.ambient = light.color * att;
+  s.ambient = light.color * light.ambient;
   float cone = 1.0f;
   if (light.type == LightType::spot)
     cone = spot_attenuation(glm::dot(-s.to_light, light.direction), light.inner_angle, light.outer_angle);
@@ -109,9 +118,10 @@ inline DirectLight direct_light(const Material& m, const LightSample& light, glm
   return out;
 }
 
-// The ambient luminance one light adds: albedo / π · ambient · its illuminance without the cone.
+// The ambient luminance one light adds: albedo / π · its ambient illuminance (Material::ambient of it for a
+// directional light).
 inline glm::vec3 ambient_light(const Material& m, const LightSample& light) {
-  return m.albedo * light.ambient * (m.ambient * kInvPi);
+  return m.albedo * light.ambient * ((light.directional ? m.ambient : 1.0f) * kInvPi);
 }
 
 // The luminance of a point: ambient + shadow · (diffuse + specular). `shadow` is the visibility a shadow lookup

@@ -148,7 +148,11 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
 
   // ---- Every light resolved before anything is drawn: a bad setting fails the frame before any work.
   std::vector<ResolvedLight> resolved;
-  for (size_t i = 0; i < scene.lights.size(); ++i) resolved.push_back(resolve_light(scene.lights[i], i, config));
+  const scenes::Aabb bounds = scenes::scene_bounds(scene);
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    resolved.push_back(resolve_light(scene.lights[i], i, config));
+    resolved.back().light.ambient = ambient_illuminance(scene.lights[i], bounds);
+  }
   check_params_used(config, resolved);
 
   // ---- Material textures: the caller's (loaded once per scene), or loaded here for this frame alone; a missing

@@ -2,7 +2,9 @@
 #include "scenes/frame/frame_lights.h"
 
 #include <cctype>
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -16,6 +18,19 @@ std::string name_stem(const std::string& prefix, const std::string& name) {
   while (!part.empty() && part.back() == '-') part.pop_back();
   while (!part.empty() && part.front() == '-') part.erase(part.begin());
   return part.empty() ? prefix : prefix + "-" + part;
+}
+
+float ambient_illuminance(const scenes::Light& light, const scenes::Aabb& bounds) {
+  if (light.type == tech::LightType::directional) return 0.0f;  // its ambient is Material::ambient of its lux
+  const glm::vec3 e = bounds.max - bounds.min;
+  if (!(e.x >= 0.0f && e.y >= 0.0f && e.z >= 0.0f) || !std::isfinite(e.x + e.y + e.z)) return 0.0f;
+  const double area = std::max(2.0 * (double(e.x) * e.y + double(e.y) * e.z + double(e.z) * e.x), 1e-4);
+  double solid_angle = 4.0 * std::numbers::pi;  // steradians the light shines into
+  if (light.type == tech::LightType::hemispherical) solid_angle = 2.0 * std::numbers::pi;
+  if (light.type == tech::LightType::spot)
+    solid_angle = 2.0 * std::numbers::pi * (1.0 - std::cos(double(glm::radians(light.outer_cone_deg))));
+  constexpr double kBounce = 0.5;  // the share of the flux the scene's surfaces reflect once
+  return float(kBounce * solid_angle * double(light.intensity) / area);
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "scenes/frame/frame.h"
+#include "scenes/scene_queries.h"
 #include "shading/lighting.h"
 
 namespace frame {
@@ -18,6 +19,13 @@ struct ResolvedLight {
   tech::LightDesc desc;
   tech::ShadowConfig config;
 };
+
+// A point, hemispherical or spot light's ambient illuminance (shading::Light::ambient, lux), the same at every
+// point: its flux Φ reflected once by surfaces of albedo ½ and spread evenly over the surface of the scene's
+// bounds, E = ½ · Φ / A with A = 2(ab + bc + ca) for a box of sides a, b, c. Φ = 4π·I for a point light, 2π·I
+// for a hemispherical one, 2π(1 − cos outer)·I for a spot (its cone to the outer angle). A is at least 1 cm²; an
+// empty box gives 0; a directional light 0 (its ambient is shading::Material::ambient of its own illuminance).
+float ambient_illuminance(const scenes::Light& light, const scenes::Aabb& bounds);
 
 // Throws FrameError naming the field: a technique the light's type does not take or that is not built, a map
 // size, tap count or bias value out of range, a technique parameter of the wrong kind. `index` is the light's

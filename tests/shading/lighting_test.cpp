@@ -75,17 +75,28 @@ TEST(Lighting, SpotInCandelaAndShadowScaleOnlyTheDirectLight) {
   spot.intensity = 4.0f;  // candela
   spot.inner_angle = 0.4f;
   spot.outer_angle = 0.5f;
+  spot.ambient = 0.5f;  // lux, the same everywhere
   Material m;
   m.albedo = glm::vec3(1.0f);
   m.ambient = 0.1f;
   m.specular = 0.0f;
   const glm::vec3 n(0, 1, 0), eye(0, 2, 0);
-  // Straight below at 2 m: 4 cd / (2 m)² = 1 lux; luminance (1 + 0.1) / π lit, 0.1 / π in shadow.
+  // Straight below at 2 m: 4 cd / (2 m)² = 1 lux; luminance (1 + ½) / π lit, ½ / π in shadow (a spot's ambient
+  // is its own Light::ambient, not Material::ambient of anything).
   const glm::vec3 lit = shading::shade(m, spot, glm::vec3(0), n, eye, 1.0f);
-  EXPECT_NEAR(lit.x, 1.1f / kPi, 1e-6f);
-  EXPECT_NEAR(shading::shade(m, spot, glm::vec3(0), n, eye, 0.0f).x, 0.1f / kPi, 1e-6f);
-  // Outside the cone (45° off axis, 2√2 m away): the ambient of 4 / 8 = ½ lux, no direct light.
-  EXPECT_NEAR(shading::shade(m, spot, glm::vec3(2.0f, 0.0f, 0.0f), n, eye, 1.0f).x, 0.1f * 0.5f / kPi, 1e-6f);
+  EXPECT_NEAR(lit.x, 1.5f / kPi, 1e-6f);
+  EXPECT_NEAR(shading::shade(m, spot, glm::vec3(0), n, eye, 0.0f).x, 0.5f / kPi, 1e-6f);
+  // Outside the cone (45° off axis, 2√2 m away) and far off: no direct light, the same ambient.
+  EXPECT_NEAR(shading::shade(m, spot, glm::vec3(2.0f, 0.0f, 0.0f), n, eye, 1.0f).x, 0.5f / kPi, 1e-6f);
+  EXPECT_NEAR(shading::shade(m, spot, glm::vec3(20.0f, -9.0f, 0.0f), n, eye, 1.0f).x, 0.5f / kPi, 1e-6f);
+  // A directional light's ambient is Material::ambient of its illuminance: 0.1 of 3 lux.
+  Light sun;
+  sun.type = LightType::directional;
+  sun.direction = {0.0f, -1.0f, 0.0f};
+  sun.intensity = 3.0f;
+  sun.ambient = 100.0f;  // unused by directional lights
+  EXPECT_NEAR(shading::shade(m, sun, glm::vec3(0), n, eye, 0.0f).x, 0.3f / kPi, 1e-6f);
+  EXPECT_NEAR(shading::shade(m, sun, glm::vec3(0), n, eye, 1.0f).x, 3.3f / kPi, 1e-6f);
 }
 
 }  // namespace
