@@ -156,3 +156,65 @@ TEST(FrameLights, MapSidesATechniqueCannotHoldAreRefusedEarly) {
   EXPECT_EQ(message(lamp, frame::FrameConfig{}),
             "lights[0].shadow.map_size: the pyramid map side 63 must be even (two halves per axis)");
 }
+
+// A point-like light's ambient is its flux, reflected once at albedo ½, over the surface of the scene's box:
+// ½ · Φ / A. A 10 × 3 × 10 m box has A = 2(30 + 30 + 100) = 320 m².
+TEST(FrameLights, AmbientIsHalfTheFluxOverTheBoundsSurface) {
+  const scenes::Aabb box{{-5.0f, 0.0f, -5.0f}, {5.0f, 3.0f, 5.0f}};
+  scenes::Light l;
+  l.intensity = 1000.0f;
+  l.type = scenes::LightType::point;
+  EXPECT_NEAR(frame::ambient_illuminance(l, box), 0.5 * 4.0 * M_PI * 1000.0 / 320.0, 1e-3);
+  l.type = scenes::LightType::hemispherical;
+  EXPECT_NEAR(frame::ambient_illuminance(l, box), 0.5 * 2.0 * M_PI * 1000.0 / 320.0, 1e-3);
+  l.type = scenes::LightType::spot;
+  l.outer_cone_deg = 60.0f;  // solid angle 2π(1 − cos 60°) = π
+  EXPECT_NEAR(frame::ambient_illuminance(l, box), 0.5 * M_PI * 1000.0 / 320.0, 1e-3);
+  l.type = scenes::LightType::directional;  // its ambient is Material::ambient of its lux, not this
+  EXPECT_EQ(frame::ambient_illuminance(l, box), 0.0f);
+  l.type = scenes::LightType::point;
+  EXPECT_EQ(frame::ambient_illuminance(l, scenes::Aabb{}), 0.0f);  // nothing in the scene
+}
+
+// In a frame the ambient is the same everywhere: a floor under a spot that points away from it (no direct light
+// on it) shows albedo / π · E_a at every pixel, near the lamp and far from it alike.
+TEST(FrameLights, AmbientOfASpotIsUniformOverTheFloor) {
+  scenes::Scene s;
+  scenes::Mesh m;
+  m.positions = {{-20, 0, -20}, {20, 0, -20}, {20, 0, 20}, {-20, 0, 20}};
+  m.normals.assign(4, glm::vec3(0, 1, 0));
+  m.indices = {0, 2, 1, 0, 3, 2};
+  s.meshes.push_back(m);
+  scenes::Material mat;
+  mat.base_color = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+  mat.specular_strength = 0.0f;
+  s.materials.push_back(mat);
+  s.instances.push_back(scenes::Instance{});
+  s.objects.push_back("floor");
+  scenes::Camera cam;
+  cam.position = {0, 50, 0};
+  cam.target = {0, 0, 0};
+  cam.up = {0, 0, -1};
+  cam.projection = scenes::Orthographic{-16.0f, 16.0f, -9.0f, 9.0f, 1.0f, 100.0f};
+  s.cameras.push_back(cam);
+  scenes::Light spot;
+  spot.type = scenes::LightType::spot;
+  spot.position = {-15, 1, -5};
+  spot.direction = {0, 1, 0};  // up, away from the floor
+  spot.intensity = 5000.0f;
+  spot.outer_cone_deg = 30.0f;
+  spot.shadow.technique = scenes::ShadowTechnique::none;
+  s.lights.push_back(spot);
+  raster::Renderer renderer(testsupport::test_threads());
+  frame::FrameConfig o;
+  o.width = 64, o.height = 36;
+  const frame::Frame f = frame::render_frame(s, o, renderer);
+  // The floor is flat (y = 0): A = 2 · 40 · 40.
+  const double expected = 0.5 / M_PI * 0.5 * 2.0 * M_PI * (1.0 - std::cos(M_PI / 6.0)) * 5000.0 / 3200.0;
+  for (int y = 0; y < o.height; ++y)
+    for (int x = 0; x < o.width; ++x) {
+      const glm::vec4 p = f.radiance.read(x, y);
+      ASSERT_EQ(p.a, 1.0f) << x << ", " << y;
+      ASSERT_NEAR(p.r, expected, expected * 1e-5) << x << ", " << y;
+    }
+}

@@ -29,10 +29,10 @@ const Case kCases[] = {
     {"evsm2", false, "evsm2", 0xa3d77cc9ae5e42e1ull},
     {"evsm4", false, "evsm4", 0xea7bd4903eb96c84ull},
     {"pcss", false, "pcss", 0xf329c6f1b6e79ceaull},
-    {"esm_spot", true, "esm", 0x40ce74e119c31870ull},
-    {"vsm_spot", true, "vsm", 0x0ec9311a1dd86ac1ull},
-    {"evsm4_spot", true, "evsm4", 0x3e336f6d607b61b8ull},
-    {"pcss_spot", true, "pcss", 0x12f55297b60e989dull},
+    {"esm_spot", true, "esm", 0xd8770fe958ce7be7ull},
+    {"vsm_spot", true, "vsm", 0x31bd6e8040606d08ull},
+    {"evsm4_spot", true, "evsm4", 0xd330139f082ab1d4ull},
+    {"pcss_spot", true, "pcss", 0x5d00c0f3c01317bbull},
 };
 
 // The tutorial room with its sun replaced by a spot light above the front of the room, aimed at the sphere.

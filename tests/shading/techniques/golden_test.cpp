@@ -39,7 +39,7 @@ const Step kSteps[] = {
     {"stratified", "tutorial", "stratified", "slope", true, 4, true, 0x11000f599cb9f428ull},
     {"rotated", "tutorial", "rotated", "slope", true, 16, true, 0x06eb268827f0535eull},
     {"early_bail", "tutorial", "early-bail", "slope", true, 16, false, 0x32b59cb0fd721552ull},
-    {"spot", "tutorial-spot", "pcf", "slope", true, 4, false, 0xc9d78769421ac635ull},
+    {"spot", "tutorial-spot", "pcf", "slope", true, 4, false, 0xbab67c76b75ccc5aull},
 };
 
 class Golden : public testing::TestWithParam<Step> {};
