@@ -39,6 +39,32 @@ float metered_luminance(const float* p) {
   return l > 0.0f && std::isfinite(l) ? l : 0.0f;
 }
 
+// The dither of pixel (x, y), in 8-bit codes, in [-1/4, 1/4): an integer hash of the position (the same at any
+// thread count and on any machine), one value for the three channels so that it never tints.
+float dither_at(uint32_t x, uint32_t y) {
+  uint32_t h = x * 0x9E3779B1u ^ (y + 0x7F4A7C15u) * 0x85EBCA77u;
+  h ^= h >> 16, h *= 0x7FEB352Du, h ^= h >> 15, h *= 0x846CA68Bu, h ^= h >> 16;
+  return float(h >> 8) * (0.5f / 16777216.0f) - 0.25f;
+}
+
+// The code of linear value `v` dithered by `d` (dither_at): the code the encoder stores, moved to its neighbour
+// when v lies within |d| of the edge between them (v's place inside its code's interval taken linearly between
+// the encoder's thresholds), so every pixel is one of the two codes around its exact encoded value. 0 and 1 and
+// beyond stay exact (black and white are not speckled).
+uint8_t dithered(const raster::Srgb8Encoder& srgb8, float v, float d) {
+  const unsigned c = srgb8(v);
+  if (!(v > 0.0f) || v >= 1.0f) return uint8_t(c);
+  float f;  // v's place in its code's interval of encoded values [c - 1/2, c + 1/2), 0 at its lower edge
+  if (c == 0)
+    f = 0.5f + 0.5f * v / srgb8.threshold(1);  // sRGB is linear below its first threshold
+  else if (c == 255)
+    f = 0.5f * (v - srgb8.threshold(255)) / (1.0f - srgb8.threshold(255));
+  else
+    f = (v - srgb8.threshold(c)) / (srgb8.threshold(c + 1) - srgb8.threshold(c));
+  const float g = f + d;
+  return uint8_t(g >= 1.0f ? c + 1 : g < 0.0f ? c - 1 : c);
+}
+
 }  // namespace
 
 float metered_ev100(const raster::ColorTarget& radiance, shading::ToneMap tone_map, raster::ThreadPool& pool) {
@@ -118,25 +144,26 @@ void develop_into(raster::ColorTarget& out, const raster::ColorTarget& radiance,
   if (out.width() != w || out.height() != h || out.format() != raster::ColorFormat::rgba8 || !out.srgb())
     throw std::invalid_argument("develop_into: the picture must be an sRGB RGBA8 target of the radiance's size");
   const float scale = shading::exposure_scale(ev100);
-  // The bytes ColorTarget::write stores into this sRGB target, without its pow per channel (raster/srgb8.h).
+  // The bytes ColorTarget::write stores into this sRGB target, without its pow per channel (raster/srgb8.h), then
+  // dithered by a quarter code.
   const raster::Srgb8Encoder srgb8;
   pool.parallel_for(size_t(h), [&](size_t row) {
     const int y = int(row);
     const float t = h > 1 ? float(y) / float(h - 1) : 0.5f;  // row 0 is the bottom of the frame
     const glm::vec3 sky = background.bottom * (1.0f - t) + background.top * t;
-    const uint8_t sky8[4] = {srgb8(sky.r), srgb8(sky.g), srgb8(sky.b), 255};
     const float* p = radiance.row32f(y);
     uint8_t* q = out.row8(y);
     for (int x = 0; x < w; ++x, p += 4, q += 4) {
-      if (!(p[3] > 0.0f)) {
-        std::copy(sky8, sky8 + 4, q);
-        continue;
+      const float d = dither_at(uint32_t(x), uint32_t(y));
+      glm::vec3 v = sky;
+      if (p[3] > 0.0f) {
+        glm::vec3 c(p[0], p[1], p[2]);
+        for (int i = 0; i < 3; ++i)
+          if (std::isnan(c[i])) c[i] = 0.0f;
+        v = shading::tone_map(c * scale, tone_map);
       }
-      glm::vec3 c(p[0], p[1], p[2]);
-      for (int i = 0; i < 3; ++i)
-        if (std::isnan(c[i])) c[i] = 0.0f;
-      const glm::vec3 v = shading::tone_map(c * scale, tone_map);
-      q[0] = srgb8(v.r), q[1] = srgb8(v.g), q[2] = srgb8(v.b), q[3] = 255;  // alpha 1: not encoded
+      q[0] = dithered(srgb8, v.r, d), q[1] = dithered(srgb8, v.g, d), q[2] = dithered(srgb8, v.b, d);
+      q[3] = 255;  // alpha 1: not encoded
     }
   });
 }

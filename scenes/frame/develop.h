@@ -21,8 +21,10 @@ float highlight_limit(shading::ToneMap tone_map);
 
 // The picture: an sRGB RGBA8 target (alpha 255) of the radiance's size. A drawn pixel is its luminance times
 // shading::exposure_scale(ev100), tone-mapped by `tone_map`; any other pixel is the background's colour at its
-// row (bottom row: `bottom`, top row: `top`, linear in between). Both run rows on `pool`, bit-identical at any
-// thread count.
+// row (bottom row: `bottom`, top row: `top`, linear in between). The 8-bit encode is ColorTarget::write's,
+// dithered: a value within a quarter code of the edge between two codes may take either, by one hash of the
+// pixel's position for the three channels (never tinted); 0 and 1 stay exact. Both run rows on `pool`,
+// bit-identical at any thread count.
 raster::ColorTarget develop(const raster::ColorTarget& radiance, float ev100, shading::ToneMap tone_map,
                             const scenes::Background& background, raster::ThreadPool& pool);
 // The same into `out` (an sRGB RGBA8 target of the radiance's size, else std::invalid_argument), every pixel of

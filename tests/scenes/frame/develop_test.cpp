@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "raster/formats.h"
+#include "raster/srgb8.h"
 #include "scenes/frame/develop.h"
 #include "scenes/frame/frame.h"
 #include "tests/support.h"
@@ -145,9 +146,12 @@ TEST(Develop, SmoothGradientHasNoBands) {
 }
 
 // develop() stores, pixel for pixel, the bytes that ColorTarget::write stores for the tone-mapped value in an sRGB
-// target (it encodes through raster/srgb8.h's thresholds instead of a pow per channel): luminances over 24 stops,
-// coloured, with undrawn pixels between them, every operator, at any thread count.
-TEST(Develop, StoresWhatAnSrgbTargetWriteStores) {
+// target (it encodes through raster/srgb8.h's thresholds instead of a pow per channel), dithered by at most a
+// quarter of a code: a byte is write()'s, or its neighbour only where the exact encoded value lies within a
+// quarter code (plus a little for the linear step inside a code) of the edge between them; black and white are
+// exact. Luminances over 24 stops, coloured, with undrawn pixels between them, every operator, at any thread
+// count (one result for all).
+TEST(Develop, StoresWhatAnSrgbTargetWriteStoresWithinAQuarterCode) {
   const int w = 97, h = 61;
   raster::ColorTarget r(w, h, raster::ColorFormat::rgba32f);
   for (int y = 0; y < h; ++y)
@@ -156,21 +160,71 @@ TEST(Develop, StoresWhatAnSrgbTargetWriteStores) {
       r.write(x, y, (x + y) % 7 == 0 ? glm::vec4(0.0f) : glm::vec4(l, 0.6f * l, 0.2f * l + 1e-4f, 1.0f));
     }
   const scenes::Background b{{0.1f, 0.3f, 0.9f}, {0.8f, 0.7f, 0.2f}};
-  for (const shading::ToneMap t : {shading::ToneMap::neutral, shading::ToneMap::aces, shading::ToneMap::clamp})
-    for (const int threads : {0, 3}) {
-      raster::ThreadPool pool(threads);
-      const raster::ColorTarget c = frame::develop(r, 1.5f, t, b, pool);
-      raster::ColorTarget expected(w, h, raster::ColorFormat::rgba8, true);
-      for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-          const glm::vec4 p = r.read(x, y);
-          const float s = float(y) / float(h - 1);
-          expected.write(x, y, p.a > 0.0f ? glm::vec4(shading::tone_map(glm::vec3(p) * shading::exposure_scale(1.5f), t), 1.0f)
-                                          : glm::vec4(b.bottom * (1.0f - s) + b.top * s, 1.0f));
+  for (const shading::ToneMap t : {shading::ToneMap::neutral, shading::ToneMap::aces, shading::ToneMap::clamp}) {
+    raster::ThreadPool one(0);
+    const raster::ColorTarget first = frame::develop(r, 1.5f, t, b, one);
+    raster::ThreadPool pool(3);
+    const raster::ColorTarget c = frame::develop(r, 1.5f, t, b, pool);
+    size_t moved = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        ASSERT_TRUE(std::equal(c.row8(y) + 4 * x, c.row8(y) + 4 * x + 4, first.row8(y) + 4 * x)) << x << ", " << y;
+        const glm::vec4 p = r.read(x, y);
+        const float s = float(y) / float(h - 1);
+        const glm::vec3 v = p.a > 0.0f ? shading::tone_map(glm::vec3(p) * shading::exposure_scale(1.5f), t)
+                                       : b.bottom * (1.0f - s) + b.top * s;
+        for (int ch = 0; ch < 3; ++ch) {
+          const int got = c.row8(y)[4 * x + ch];
+          if (!(v[ch] > 0.0f) || v[ch] >= 1.0f) {
+            ASSERT_EQ(got, v[ch] >= 1.0f ? 255 : 0) << x << ", " << y;
+            continue;
+          }
+          const float e = raster::srgb_encode(v[ch]) * 255.0f;
+          ASSERT_GE(got, int(std::lround(e - 0.27f))) << x << ", " << y << ", " << ch;
+          ASSERT_LE(got, int(std::lround(e + 0.27f))) << x << ", " << y << ", " << ch;
+          moved += got != int(std::lround(e));
         }
-      for (int y = 0; y < h; ++y)
-        for (int x = 0; x < 4 * w; ++x) ASSERT_EQ(c.row8(y)[x], expected.row8(y)[x]) << x / 4 << ", " << y;
+        ASSERT_EQ(c.row8(y)[4 * x + 3], 255);
+      }
+    EXPECT_GT(moved, size_t(0)) << "no pixel was dithered";
+  }
+}
+
+// The dither is one value for the three channels: a grey gradient stays grey in every pixel (independent noise
+// per channel would tint it), and a ramp across one code boundary, slow enough to band, mixes the two codes over
+// the rows instead of one hard edge, every pixel one of the two.
+TEST(Develop, DitherIsUntintedAndBreaksAHardEdge) {
+  const int w = 256, h = 64;
+  raster::ColorTarget r(w, h, raster::ColorFormat::rgba32f);
+  raster::Srgb8Encoder srgb8;
+  // From the middle of code 40 to the middle of code 41 (in linear light, between the encoder's thresholds): the
+  // edge between them in the middle, half a code on either side.
+  const float lo = 0.5f * (srgb8.threshold(40) + srgb8.threshold(41));
+  const float top = 0.5f * (srgb8.threshold(41) + srgb8.threshold(42));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const float v = lo + (top - lo) * (float(x) + 0.5f) / float(w);
+      r.write(x, y, glm::vec4(v, v, v, 1.0f));
     }
+  raster::ThreadPool pool(testsupport::test_threads());
+  const raster::ColorTarget c = frame::develop(r, shading::ev100_mapping(1.0, 1.0), shading::ToneMap::clamp,
+                                               scenes::Background{}, pool);
+  int mixed_columns = 0;
+  for (int x = 0; x < w; ++x) {
+    bool has40 = false, has41 = false;
+    for (int y = 0; y < h; ++y) {
+      const uint8_t* p = c.row8(y) + 4 * x;
+      ASSERT_EQ(p[0], p[1]) << x << ", " << y;
+      ASSERT_EQ(p[1], p[2]) << x << ", " << y;
+      ASSERT_GE(p[0], 40);
+      ASSERT_LE(p[0], 41);
+      has40 |= p[0] == 40, has41 |= p[0] == 41;
+    }
+    mixed_columns += has40 && has41;
+  }
+  // Within a quarter code of the edge: 64 columns either side of x = 128 can mix (at the fringes rarely).
+  EXPECT_GE(mixed_columns, 80);
+  EXPECT_LE(mixed_columns, 130);
 }
 
 // The metered EV100 is exactly the one of the plain computation (log2 summed row by row, the 99th percentile by

@@ -39,18 +39,18 @@ void apply_params(frame::FrameConfig& o, const std::string& text) {
 
 // Expected hashes at 320 × 180 with each technique's default map size and format.
 const Case kCases[] = {
-    {"duel_cascades", "duel", tech::Technique::cascades, "", 0x94732508cc7752eaull},
-    {"duel_cascades2_separate", "duel", tech::Technique::cascades, "cascades=2;map_layout=separate", 0x3a72a8efa469afc4ull},
-    {"duel_cascades_stable_blend", "duel", tech::Technique::cascades, "stabilize=true;cascade_blend=0.2", 0x6d283631f3974581ull},
-    {"duel_cascades_visible", "duel", tech::Technique::cascades, "view_range=visible", 0xd0b293b930fa07e4ull},
-    {"duel_cascades_lispsm", "duel", tech::Technique::cascades, "cascade_warp=lispsm", 0xfdb065077c252616ull},
-    {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0xa48741bef21dfa5eull},
-    {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0xb09d785c4ff70be4ull},
-    {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0x9dd2916a30acbf4cull},
-    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x4a9f7fc1e92ed6b8ull},
-    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0xe81f8ed65bc3cec4ull},
-    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0xcc9c35878c556131ull},
-    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0xae6181953daba985ull},
+    {"duel_cascades", "duel", tech::Technique::cascades, "", 0xe35f2e3e046dfd95ull},
+    {"duel_cascades2_separate", "duel", tech::Technique::cascades, "cascades=2;map_layout=separate", 0x866e20285fbc9e36ull},
+    {"duel_cascades_stable_blend", "duel", tech::Technique::cascades, "stabilize=true;cascade_blend=0.2", 0x278c3a4129be6edaull},
+    {"duel_cascades_visible", "duel", tech::Technique::cascades, "view_range=visible", 0x3b06233669c1ed40ull},
+    {"duel_cascades_lispsm", "duel", tech::Technique::cascades, "cascade_warp=lispsm", 0x0cd381b9fa160c71ull},
+    {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0x3bcc96392b2d26fdull},
+    {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0x987ca86d73a61dbbull},
+    {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0x9b500cc842e9a882ull},
+    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x44cec22f04e2aaadull},
+    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0x57ba760862e3f574ull},
+    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x674ff6569f0e009full},
+    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0xd2b28973131a769bull},
 };
 
 class ViewFollowingGolden : public testing::TestWithParam<Case> {};
