@@ -2,7 +2,9 @@
 #include "cli/image_input.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -65,11 +67,36 @@ OIIO::ImageBuf read_image(const std::string& file) {
   OIIO::ImageSpec float_spec = spec;
   float_spec.set_format(OIIO::TypeDesc::FLOAT);
   OIIO::ImageBuf buf(float_spec);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buf.localpixels())) {
+  // In the file's own sample types (packed, per channel), then converted here: asked for any other type,
+  // OpenImageIO converts through a scratch buffer of 64 MiB whatever the image's size (a 16 x 16 map included),
+  // which was most of the time a small read took.
+  float* pixels = static_cast<float*>(buf.localpixels());
+  const bool already_float = spec.channelformats.empty() && spec.format == OIIO::TypeDesc::FLOAT;
+  const size_t values = size_t(spec.image_pixels()) * size_t(spec.nchannels);
+  std::vector<std::byte> raw(already_float ? 0 : size_t(spec.image_pixels()) * spec.pixel_bytes(true));
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UNKNOWN,
+                      already_float ? static_cast<void*>(pixels) : static_cast<void*>(raw.data()))) {
     std::string why = in->geterror();
     if (why.empty()) why = "cannot be read";
     throw CliError(file, why);
   }
+  bool converted = true;
+  if (already_float) {
+  } else if (spec.channelformats.empty()) {
+    converted = OIIO::convert_pixel_values(spec.format, raw.data(), OIIO::TypeDesc::FLOAT, pixels, int(values));
+  } else {
+    const auto pixel_bytes = OIIO::stride_t(spec.pixel_bytes(true));
+    size_t offset = 0;
+    for (int c = 0; converted && c < spec.nchannels; ++c) {
+      const OIIO::TypeDesc type = spec.channelformats[size_t(c)];
+      converted = OIIO::convert_image(1, spec.width, spec.height * std::max(spec.depth, 1), 1, raw.data() + offset,
+                                      type, pixel_bytes, OIIO::AutoStride, OIIO::AutoStride, pixels + c,
+                                      OIIO::TypeDesc::FLOAT, OIIO::stride_t(sizeof(float)) * spec.nchannels,
+                                      OIIO::AutoStride, OIIO::AutoStride);
+      offset += type.size();
+    }
+  }
+  if (!converted) throw CliError(file, "its samples cannot be converted to float");
   return buf;
 }
 
