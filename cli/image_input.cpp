@@ -2,10 +2,12 @@
 #include "cli/image_input.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imagecache.h>
+#include <OpenImageIO/imageio.h>
 
 #include "cli/cli_common.h"
 #include "scenes/io/exr_header.h"
@@ -40,25 +42,61 @@ ChannelChoice choose_depth_channel(const std::vector<std::string>& channels, con
 }
 
 OIIO::ImageBuf read_image(const std::string& file) {
+  const ImageKind kind = image_kind(file);
   scenes::io::check_exr_header(file);  // an attribute claiming gigabytes, before OpenEXR allocates them
   const scenes::io::QuietStderr quiet;  // libpng's own line on a broken file; ours follows
-  // ImageBuf reads the header through OpenImageIO's shared ImageCache, which keeps it by file name: a file
-  // rewritten since an earlier read in this process would be sized by its old header and its pixels written
-  // past the buffer (fuzz_image_input: a 4 x 4 x 2 EXR, then an 8 x 8 one at the same path). Forget it first.
-  OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(file));
-  OIIO::ImageBuf buf(file);
+  // The reader of the format the extension names, and only that one: OpenImageIO's open-by-name tries every
+  // plugin it has on a file its own reader refuses (LibRaw among them, which allocates and clears tens of
+  // megabytes to say no), and a file that is not the PNG or EXR its name says is an error here, not a guess.
+  // Reading through ImageInput also keeps OpenImageIO's shared ImageCache, which remembers headers by file
+  // name, out of a command that may read a file rewritten since.
+  auto in = OIIO::ImageInput::create(kind == ImageKind::exr ? "openexr" : "png");
+  if (!in) throw CliError(file, "cannot read the image: " + OIIO::geterror());
+  OIIO::ImageSpec opened;
+  if (!in->open(file, opened)) {
+    std::string why = in->geterror();
+    if (why.empty()) why = std::string("not a readable ") + (kind == ImageKind::exr ? "EXR" : "PNG") + " file";
+    throw CliError(file, why);
+  }
   // The header first: a file that claims an absurd size is refused before anything is allocated.
-  const OIIO::ImageSpec& spec = buf.spec();
-  if (buf.has_error()) throw CliError(file, buf.geterror());
-  if (spec.width < 1 || spec.height < 1 || spec.width > 65536 || spec.height > 65536 ||
-      uint64_t(spec.width) * uint64_t(spec.height) * uint64_t(std::max(spec.nchannels, 1)) > (uint64_t(1) << 30))
+  const OIIO::ImageSpec spec = in->spec();
+  if (spec.width < 1 || spec.height < 1 || spec.width > 65536 || spec.height > 65536 || spec.nchannels < 1 ||
+      uint64_t(spec.width) * uint64_t(spec.height) * uint64_t(spec.nchannels) > (uint64_t(1) << 30))
     throw CliError(file, "image size " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
                              std::to_string(spec.nchannels) + " channels is beyond what inspect and diff read");
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
-    std::string why = buf.geterror();
+  OIIO::ImageSpec float_spec = spec;
+  float_spec.set_format(OIIO::TypeDesc::FLOAT);
+  OIIO::ImageBuf buf(float_spec);
+  // In the file's own sample types (packed, per channel), then converted here: asked for any other type,
+  // OpenImageIO converts through a scratch buffer of 64 MiB whatever the image's size (a 16 x 16 map included),
+  // which was most of the time a small read took.
+  float* pixels = static_cast<float*>(buf.localpixels());
+  const bool already_float = spec.channelformats.empty() && spec.format == OIIO::TypeDesc::FLOAT;
+  const size_t values = size_t(spec.image_pixels()) * size_t(spec.nchannels);
+  std::vector<std::byte> raw(already_float ? 0 : size_t(spec.image_pixels()) * spec.pixel_bytes(true));
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UNKNOWN,
+                      already_float ? static_cast<void*>(pixels) : static_cast<void*>(raw.data()))) {
+    std::string why = in->geterror();
     if (why.empty()) why = "cannot be read";
     throw CliError(file, why);
   }
+  bool converted = true;
+  if (already_float) {
+  } else if (spec.channelformats.empty()) {
+    converted = OIIO::convert_pixel_values(spec.format, raw.data(), OIIO::TypeDesc::FLOAT, pixels, int(values));
+  } else {
+    const auto pixel_bytes = OIIO::stride_t(spec.pixel_bytes(true));
+    size_t offset = 0;
+    for (int c = 0; converted && c < spec.nchannels; ++c) {
+      const OIIO::TypeDesc type = spec.channelformats[size_t(c)];
+      converted = OIIO::convert_image(1, spec.width, spec.height * std::max(spec.depth, 1), 1, raw.data() + offset,
+                                      type, pixel_bytes, OIIO::AutoStride, OIIO::AutoStride, pixels + c,
+                                      OIIO::TypeDesc::FLOAT, OIIO::stride_t(sizeof(float)) * spec.nchannels,
+                                      OIIO::AutoStride, OIIO::AutoStride);
+      offset += type.size();
+    }
+  }
+  if (!converted) throw CliError(file, "its samples cannot be converted to float");
   return buf;
 }
 

@@ -31,7 +31,10 @@ std::array<glm::vec2, 32> lattice32() {
 const std::array<glm::vec2, 32> kThirtyTwo = lattice32();
 const glm::vec2 kCentre[1] = {{0.0f, 0.0f}};
 
-// Samples of this many pixels' worth are projected and sorted at once (memory: 8 per pixel at most).
+// Samples are projected, sorted and tested in batches: up to this many of each pixel's samples, over a band of
+// rows holding at most IrregularSettings::max_batch_samples of them. Each sample's answer is exact and independent
+// of the others (the grid only finds candidate triangles), so the batching changes the statistics, never the
+// visibility. Unbounded, a 16384 x 16384 frame in one batch needed 24 GB and was killed by the kernel.
 constexpr size_t kSamplesPerBatch = 8;
 
 void add(GridStats& sum, const GridStats& s) {
@@ -91,34 +94,43 @@ IrregularBuffer irregular_visibility(const CameraSurface& surface, const LightDe
   const glm::vec2 size(float(surface.width), float(surface.height));
   const IrregularLight il = irregular_light(light);
   std::vector<uint8_t> lit(pixels, 0);
+  const size_t width = size_t(std::max(surface.width, 1));
   for (size_t k0 = 0; k0 < spp; k0 += kSamplesPerBatch) {
     const size_t group = std::min(kSamplesPerBatch, spp - k0);
-    // Each pixel's samples of this batch, in pixel order then sample order; then the reached ones packed.
-    std::vector<glm::vec3> dense(pixels * group);
-    std::vector<uint8_t> reached(pixels * group, 0);
-    pool.parallel_for(size_t(surface.height), [&](size_t y) {
-      for (int x = 0; x < surface.width; ++x) {
-        const size_t p = surface.index(x, int(y));
-        if (!surface.covered[p]) continue;
-        const glm::vec2 frag(float(x) + 0.5f, float(y) + 0.5f);
-        for (size_t j = 0; j < group; ++j) {
-          const glm::vec3 pos = spp == 1 ? surface.position[p]
-                                         : footprint_point(inv, size, frag, offsets[k0 + j], surface.position[p],
-                                                           surface.normal[p]);
-          reached[p * group + j] =
-              shadow_origin(light, pos, surface.normal[p], surface.epsilon, dense[p * group + j]) ? 1 : 0;
+    const size_t band_rows = std::max<size_t>(1, std::max<size_t>(settings.max_batch_samples, 1) / (width * group));
+    for (size_t y0 = 0; y0 < size_t(surface.height); y0 += band_rows) {
+      const size_t y1 = std::min(size_t(surface.height), y0 + band_rows);
+      const size_t first = y0 * width, band_pixels = (y1 - y0) * width;
+      // Each pixel's samples of this batch, in pixel order then sample order; then the reached ones packed.
+      std::vector<glm::vec3> dense(band_pixels * group);
+      std::vector<uint8_t> reached(band_pixels * group, 0);
+      pool.parallel_for(y1 - y0, [&](size_t row) {
+        const int y = int(y0 + row);
+        for (int x = 0; x < surface.width; ++x) {
+          const size_t p = surface.index(x, y), q = p - first;
+          if (!surface.covered[p]) continue;
+          const glm::vec2 frag(float(x) + 0.5f, float(y) + 0.5f);
+          for (size_t j = 0; j < group; ++j) {
+            const glm::vec3 pos = spp == 1 ? surface.position[p]
+                                           : footprint_point(inv, size, frag, offsets[k0 + j], surface.position[p],
+                                                             surface.normal[p]);
+            reached[q * group + j] =
+                shadow_origin(light, pos, surface.normal[p], surface.epsilon, dense[q * group + j]) ? 1 : 0;
+          }
         }
-      }
-    });
-    std::vector<glm::vec3> origins;
-    std::vector<uint32_t> owner;
-    for (size_t i = 0; i < dense.size(); ++i)
-      if (reached[i]) origins.push_back(dense[i]), owner.push_back(uint32_t(i / group));
-    GridStats st;
-    const std::vector<uint8_t> shadowed = irregular_shadow(il, origins, casters, settings.grid, pool, st);
-    add(out.stats, st);
-    for (size_t i = 0; i < origins.size(); ++i)
-      if (!shadowed[i]) ++lit[owner[i]];
+      });
+      std::vector<glm::vec3> origins;
+      std::vector<uint32_t> owner;
+      for (size_t i = 0; i < dense.size(); ++i)
+        if (reached[i]) origins.push_back(dense[i]), owner.push_back(uint32_t(first + i / group));
+      dense = {};
+      reached = {};
+      GridStats st;
+      const std::vector<uint8_t> shadowed = irregular_shadow(il, origins, casters, settings.grid, pool, st);
+      add(out.stats, st);
+      for (size_t i = 0; i < origins.size(); ++i)
+        if (!shadowed[i]) ++lit[owner[i]];
+    }
   }
   for (size_t p = 0; p < pixels; ++p)
     if (surface.covered[p]) out.visibility[p] = float(lit[p]) / float(spp);

@@ -22,6 +22,10 @@ namespace shading::tech {
 struct IrregularSettings {
   int samples_per_pixel = 1;  // 1, 8 or 32
   GridSettings grid;
+  // At most this many samples are projected, sorted and tested at once (a band of rows, up to 8 samples of each
+  // pixel; about 80 bytes a sample): 2^24 keeps the pass near 1.3 GiB for any frame size, and a 1920 x 1080
+  // frame at 8 samples a pixel in one batch. Each sample's answer is exact, so it changes statistics only.
+  size_t max_batch_samples = size_t(1) << 24;
 };
 
 // The sample positions within a pixel, in pixels from its centre: 1 (the centre), 8 (the standard 8× MSAA

@@ -206,6 +206,15 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
     const std::string png = testsupport::slurp(dir / "whole.png");
     std::ofstream(dir / "cut.png", std::ios::binary) << png.substr(0, png.size() / 2);
     expect_bad("diff whole.png cut.png", "cut.png");
+    // A file that is not what its extension says is refused by that format's reader, not read by whichever
+    // other reader accepts it (OpenImageIO would otherwise try all of them, LibRaw included).
+    fs::copy_file(dir / "whole.png", dir / "frame.exr");
+    expect_bad("inspect frame.exr", "frame.exr");
+    write(dir / "words.png", "not an image at all, only words");
+    expect_bad("diff whole.png words.png", "words.png");
+    ASSERT_EQ(shadowlab(dir, "render tutorial --size 16x16 --maps m --out small.png").code, 0);
+    fs::copy_file(dir / "m" / "light0-sun.exr", dir / "map.png");
+    expect_bad("diff map.png map.png", "map.png");
   }
   // Issue 23: a valid map wider than a frame target; its preview is refused in our words, not the target's.
   {

@@ -33,6 +33,9 @@ cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}" >/dev/null
   exit 2
 }
 
+# Each input is written to a file (the readers take paths, as the commands do): on tmpfs when there is one,
+# since a disk file's truncate-and-write cost more than most targets' reading of it.
+if [ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ]; then export TMPDIR=/dev/shm; fi
 # Leaks inside third-party libraries that our code cannot free (each one explained in the file).
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$here/lsan.supp:print_suppressions=0}
 status=0

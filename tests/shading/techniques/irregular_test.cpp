@@ -180,6 +180,47 @@ frame::FrameConfig irregular_view(int samples = 1, int w = 320, int h = 240) {
 
 // The square over the floor under the sun, and the same square under a spot: every lit-facing pixel agrees with
 // the ray-cast reference, near edges too, with no bias setting.
+// The light-space pass works in bands of rows when a frame holds more samples than one batch may: a batch of 100
+// samples (one row of 64 pixels at a time) gives every pixel the same visibility as one batch of all of them,
+// at one and eight samples a pixel, and with one sample the closed form of the triangle's shadow.
+TEST(IrregularVisibility, BandsOfRowsGiveTheSameAnswerAsOneBatch) {
+  constexpr int kSide = 64;
+  tech::CameraSurface surface;
+  surface.width = surface.height = kSide;
+  surface.covered.assign(size_t(kSide) * kSide, 1);
+  surface.normal.assign(surface.covered.size(), glm::vec3(0.0f, 1.0f, 0.0f));
+  surface.position.resize(surface.covered.size());
+  surface.epsilon = 1e-4f;
+  for (int y = 0; y < kSide; ++y)  // 1/32 m a pixel over [-0.5, 1.5]², x along columns, z along rows
+    for (int x = 0; x < kSide; ++x)
+      surface.position[surface.index(x, y)] = {(float(x) + 0.5f) / 32.0f - 0.5f, 0.0f, (float(y) + 0.5f) / 32.0f - 0.5f};
+  // A camera straight above the square, so the footprints of the sub-samples lie on the floor too.
+  const glm::mat4 view_proj(glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec4(0.0f, 0.0f, -0.1f, 0.0f),
+                            glm::vec4(0.0f, 1.0f, 0.0f, 0.0f), glm::vec4(-0.5f, -0.5f, 0.5f, 1.0f));
+  const OneTriangle tri(1.0f);
+  raster::ThreadPool pool(testsupport::test_threads());
+  for (int spp : {1, 8}) {
+    tech::IrregularSettings whole, banded;
+    whole.samples_per_pixel = banded.samples_per_pixel = spp;
+    banded.max_batch_samples = 100;
+    const tech::IrregularBuffer a =
+        tech::irregular_visibility(surface, sun_straight_down(), view_proj, whole, tri.geometry(), pool);
+    const tech::IrregularBuffer b =
+        tech::irregular_visibility(surface, sun_straight_down(), view_proj, banded, tri.geometry(), pool);
+    ASSERT_EQ(a.visibility.size(), b.visibility.size());
+    size_t dark = 0;
+    for (size_t p = 0; p < a.visibility.size(); ++p) {
+      EXPECT_EQ(a.visibility[p], b.visibility[p]) << spp << " samples, pixel " << p;
+      dark += a.visibility[p] < 1.0f;
+      if (spp == 1) {
+        const glm::vec3 q = surface.position[p];
+        EXPECT_EQ(a.visibility[p], in_closed_triangle(q.x, q.z) ? 0.0f : 1.0f) << "pixel " << p;
+      }
+    }
+    EXPECT_GT(dark, 400u) << spp;  // the triangle's shadow, half of a 32 x 32 square
+  }
+}
+
 TEST(IrregularFrame, AgreesWithTheRayCastReference) {
   const char* kSquareUnderSpot = R"({
     "objects": [
