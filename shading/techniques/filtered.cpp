@@ -44,13 +44,14 @@ raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& se
   const ShadowPass& p = set.passes.at(pass);
   const raster::DepthTarget& depth = *set.targets.at(p.target);
   const int w = p.viewport.width, h = p.viewport.height;
-  if (!out.map || out.map->width() != w || out.map->height() != h) {
-    out.map = std::make_unique<raster::ColorTarget>(w, h, raster::ColorFormat::rgba32f);
-    out.scratch = std::make_unique<raster::ColorTarget>(w, h, raster::ColorFormat::rgba32f);
+  const raster::ColorFormat format = moment_format(params.kind);
+  if (!out.map || out.map->width() != w || out.map->height() != h || out.map->format() != format) {
+    out.map = std::make_unique<raster::ColorTarget>(w, h, format);
+    out.scratch = std::make_unique<raster::ColorTarget>(w, h, format);
   }
   raster::DrawStats stats =
       encode_moments(renderer, depth, p.viewport, LightDepth::of(p.proj, p.perspective), params, *out.map);
-  stats += blur_map(renderer, *out.map, *out.scratch, blur_radius, moment_channels(params.kind));
+  stats += blur_map(renderer, *out.map, *out.scratch, blur_radius);
   out.view = Texture2D::view(*out.map);
   return stats;
 }

@@ -1,8 +1,8 @@
 // The filterable shadow maps: exponential (ESM), variance (VSM) and exponential variance (EVSM, two or four
 // moments) for directional and spot lights, on the classic technique's single map. Building is four passes on
-// the pipeline: the depth pass (depth_pass.h, the classic state), the encode pass (depth → moments, RGBA32F)
-// and the two blur passes (blur_pass.h). Reading is one bilinear lookup of the blurred moments per point and
-// the kind's visibility formula (moments.h). Formulas, parameters and limits: docs/filtered-shadows.md.
+// the pipeline: the depth pass (depth_pass.h, the classic state), the encode pass (depth → moments, a float
+// target of the kind's channels) and the two blur passes (blur_pass.h). Reading is one bilinear lookup of the
+// blurred moments per point and the kind's visibility formula (moments.h). Formulas, parameters and limits: docs/filtered-shadows.md.
 #pragma once
 #include <memory>
 #include <span>
@@ -27,7 +27,7 @@ struct FilteredReader {
   glm::vec3 position{0.0f}, direction{0.0f, -1.0f, 0.0f};
   BiasParams bias;  // constant, slope (in linear depth units) and normal offset; offset acts in the depth pass
   MomentParams params;
-  Texture2D moments;  // view of the blurred RGBA32F target
+  Texture2D moments;  // view of the blurred moment target (R32F, RG32F or RGBA32F: moment_format)
   Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
 };
 
