@@ -5,6 +5,7 @@
 // blurred moments per point and the kind's visibility formula (moments.h). Formulas, parameters and limits: docs/filtered-shadows.md.
 #pragma once
 #include <memory>
+#include <optional>
 #include <span>
 
 #include <glm/mat4x4.hpp>
@@ -46,9 +47,18 @@ struct MomentMap {
   Texture2D view;
 };
 
-// Encodes pass `pass` of `set` (built) into `out` and blurs it; the targets are (re)made at the pass's size.
+// Encodes pass `pass` of `set` (built) into `out` and blurs it; the targets are (re)made at the pass's size. The
+// stored depth is made linear as the pass's projection asks (LightDepth::of), or as `depth` says (a cube
+// face's radial distance is linear already).
 raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& set, size_t pass,
                               const MomentParams& params, int blur_radius, MomentMap& out);
+raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& set, size_t pass,
+                              const LightDepth& depth, const MomentParams& params, int blur_radius, MomentMap& out);
+
+// The `moments` parameter of the techniques that take one (cascades, cube): none, or the kind. Throws
+// TechniqueError for a filter other than the default pcf, or pcf_taps, beside a kind: the moments are read with
+// one bilinear lookup, so the filter would silently do nothing.
+std::optional<MomentKind> moments_param(const ShadowConfig& config);
 
 // A built classic map set (one pass) turned filterable: its moment map and the reader.
 struct FilteredMap {
