@@ -1,8 +1,8 @@
 // The back end of a shaded draw: covered pixels of a block grouped into 2×2 quads, early depth test when the
 // shader allows it, the shader run on the quad (helper lanes included), late depth test, depth write, and the
 // colour write with blending. A shader with the wide form (fragment_pair, shader.h) runs on two quads at once
-// in SIMD lanes instead, with the depth test, depth write and RGBA8 colour write eight pixels at a time; both
-// paths give the same bits.
+// in SIMD lanes instead, with the depth test, depth write and the colour write of linear RGBA8 and of the
+// float formats eight pixels at a time; both paths give the same bits.
 #pragma once
 #include <cmath>
 #include <cstddef>
@@ -138,6 +138,7 @@ struct ShadedStage {
     typename PairInterp<V>::Rows interp;
     typename Traits::Storage *d0, *d1;  // the depth rows y, y + 1 (null without a depth target)
     uint32_t *c0, *c1;                  // the RGBA8 colour rows, when the colour write takes the fast path
+    float *f0, *f1;                     // the float colour rows, when their colour write takes the fast path
   };
 
   // Blocks are walked left to right, so the colour line 16 pixels to the right of this block, in each of its
@@ -153,6 +154,16 @@ struct ShadedStage {
   bool packed_color() const {
     return color && color_write && color->format() == ColorFormat::rgba8 && !color->srgb() &&
            blend == BlendMode::replace;
+  }
+
+  // The same for a float target, whose block row is one line (RG32F) or more: the lines right of the block.
+  static void prefetch_next_float_lines(const float* f, ptrdiff_t pitch) {
+    for (int r = 0; r < kBlockSize; ++r) __builtin_prefetch(f + r * pitch, 1, 3);
+  }
+
+  // The float formats store the channels unchanged, so with no blending eight pixels go out as whole rows.
+  bool float_color() const {
+    return color && color_write && color->channels() > 0 && blend == BlendMode::replace;
   }
 
   void pair_block(const TriangleSetup& t, int32_t bx, int32_t by, uint64_t mask) const {
@@ -184,6 +195,10 @@ struct ShadedStage {
     uint32_t* const c = packed ? reinterpret_cast<uint32_t*>(color->row8(by)) + bx : nullptr;
     const ptrdiff_t dpitch = depth ? depth->pitch() : 0, cpitch = packed ? color->pitch() : 0;
     if (c) prefetch_next_colour_lines(c, cpitch);
+    const int channels = float_color() ? color->channels() : 0;
+    float* const f = channels ? color->row32f(by) + ptrdiff_t(bx) * channels : nullptr;
+    const ptrdiff_t fpitch = ptrdiff_t(channels) * color->pitch();
+    if (f) prefetch_next_float_lines(f + kBlockSize * channels, fpitch);
     for (int p = 0; p < 4; ++p) {
       const unsigned rows = kFull ? 0xFFFFu : unsigned(mask >> (16 * p)) & 0xFFFFu;
       if (!rows) continue;
@@ -195,12 +210,14 @@ struct ShadedStage {
       row.d1 = d ? row.d0 + dpitch : nullptr;
       row.c0 = c ? c + 2 * p * cpitch : nullptr;
       row.c1 = c ? row.c0 + cpitch : nullptr;
+      row.f0 = f ? f + 2 * p * fpitch : nullptr;
+      row.f1 = f ? row.f0 + fpitch : nullptr;
       for (int h = 0; h < 2; ++h) {
         const unsigned live = kFull ? 0xFFu : ((rows >> (4 * h)) & 0xFu) | (((rows >> (8 + 4 * h)) & 0xFu) << 4);
         if (!live) continue;
         // plane_depth's operations: fma(dzdy, y, fma(dzdx, x, z_a0)) + z_offset, clamped.
         const VecF32 z = clamp01(simd::fma(dzdy, row.y, cols[h].zcol) + z_offset);
-        pair(t, interp, cols[h], row, z, 4 * h, bx + 4 * h, y, live);
+        pair(t, interp, cols[h], row, z, 4 * h, bx + 4 * h, y, live, channels);
       }
     }
   }
@@ -209,7 +226,7 @@ struct ShadedStage {
   // `dx` is x's offset from the block's left edge (the row pointers' origin).
   [[gnu::always_inline]] void pair(const TriangleSetup& t, const PairInterp<V>& interp, const PairColumn& col,
                                    const PairRow& row, simd::VecF32 z, int dx, int32_t x, int32_t y,
-                                   unsigned live) const {
+                                   unsigned live, int channels) const {
     using simd::VecF32;
     typename Traits::Value stored{};
     if (row.d0) stored = simd::load_rows4(row.d0 + dx, row.d1 + dx);
@@ -234,6 +251,7 @@ struct ShadedStage {
     if (row.d0 && depth_write)
       simd::store_rows4(simd::select(simd::Mask::from_bits(live), stored, frag), row.d0 + dx, row.d1 + dx);
     if (row.c0) write_packed_color(row.c0 + dx, row.c1 + dx, out, live);
+    else if (row.f0 && live == 0xFFu) write_float_color(row.f0 + dx * channels, row.f1 + dx * channels, out, channels);
     else if (color && color_write) write_pair_color(x, y, out, live);
   }
 
@@ -250,7 +268,17 @@ struct ShadedStage {
     simd::store_rows4(packed, r0, r1);
   }
 
-  // Any other colour target or blend: pixel by pixel through write_color.
+  // ColorTarget::write of a float target, eight covered pixels at once: the first `channels` channels stored
+  // unchanged, interleaved texel by texel.
+  static void write_float_color(float* r0, float* r1, const QuadPairOut& out, int channels) {
+    const auto& c = out.color;
+    if (channels == 1) simd::store_rows4(c[0], r0, r1);
+    else if (channels == 2) simd::store_rows4_interleaved(c[0], c[1], r0, r1);
+    else simd::store_rows4_interleaved(c[0], c[1], c[2], c[3], r0, r1);
+  }
+
+  // Any other colour target or blend, and float targets' partly covered pairs: pixel by pixel through
+  // write_color.
   void write_pair_color(int32_t x, int32_t y, const QuadPairOut& out, unsigned live) const {
     alignas(32) float ch[4][8];
     for (int i = 0; i < 4; ++i) out.color[i].store(ch[i]);

@@ -146,11 +146,15 @@ float srgb_decode(float e) {
 }
 
 ColorTarget::ColorTarget(int width, int height, ColorFormat format, bool srgb)
-    : width_(width), height_(height), format_(format), srgb_(srgb && format == ColorFormat::rgba8) {
+    : width_(width),
+      height_(height),
+      format_(format),
+      srgb_(srgb && format == ColorFormat::rgba8),
+      channels_(float_channels(format)) {
   check_target_size(width, height);
   pitch_ = round_up(width, kTileSize);
   padded_height_ = round_up(height, kTileSize);
-  storage_ = AlignedBuffer(size_t(pitch_) * size_t(padded_height_) * (format == ColorFormat::rgba8 ? 4 : 16));
+  storage_ = AlignedBuffer(size_t(pitch_) * size_t(padded_height_) * bytes_per_texel(format));
 }
 
 void ColorTarget::clear(const glm::vec4& c) {
@@ -166,9 +170,11 @@ void ColorTarget::clear(const glm::vec4& c) {
 }
 
 glm::vec4 ColorTarget::read(int x, int y) const {
-  if (format_ == ColorFormat::rgba32f) {
-    const float* p = row32f(y) + size_t(x) * 4;
-    return {p[0], p[1], p[2], p[3]};
+  if (channels_ > 0) {
+    const float* p = row32f(y) + size_t(x) * size_t(channels_);
+    glm::vec4 c(0.0f, 0.0f, 0.0f, 1.0f);
+    for (int i = 0; i < channels_; ++i) c[i] = p[i];
+    return c;
   }
   const uint8_t* p = row8(y) + size_t(x) * 4;
   glm::vec4 c(p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f, p[3] / 255.0f);

@@ -112,7 +112,8 @@ class DepthTarget {
   mutable std::mutex clear_mutex_;
 };
 
-// A colour buffer: RGBA8 (unorm, optionally sRGB-encoded on write as GL_SRGB8_ALPHA8) or RGBA32F.
+// A colour buffer: RGBA8 (unorm, optionally sRGB-encoded on write as GL_SRGB8_ALPHA8) or 32-bit float with
+// four, two or one channels (RGBA32F, RG32F, R32F).
 class ColorTarget {
  public:
   ColorTarget(int width, int height, ColorFormat format, bool srgb = false);
@@ -123,16 +124,20 @@ class ColorTarget {
   bool srgb() const { return srgb_; }
   int pitch() const { return pitch_; }
   int padded_height() const { return padded_height_; }
+  // Floats per texel of a float target (4, 2 or 1), 0 for RGBA8.
+  int channels() const { return channels_; }
 
   void clear(const glm::vec4& color);
-  // Linear colour at (x, y): unorm values divided by 255 (and decoded from sRGB when the target is sRGB).
+  // Linear colour at (x, y): unorm values divided by 255 (and decoded from sRGB when the target is sRGB); a
+  // float target's missing channels read 0 and its missing alpha 1.
   glm::vec4 read(int x, int y) const;
   // Stores a linear colour with GL's conversion: clamp to [0, 1], sRGB-encode if the target is sRGB, then
-  // round(c · 255) for RGBA8; RGBA32F stores the value unchanged. Inline: shaded draws call it per pixel.
+  // round(c · 255) for RGBA8; a float target stores its channels of the value unchanged. Inline: shaded draws
+  // call it per pixel.
   void write(int x, int y, const glm::vec4& c) {
-    if (format_ == ColorFormat::rgba32f) {
-      float* p = row32f(y) + size_t(x) * 4;
-      p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = c.a;
+    if (channels_ > 0) {
+      float* p = row32f(y) + size_t(x) * size_t(channels_);
+      for (int i = 0; i < channels_; ++i) p[i] = c[i];
       return;
     }
     uint8_t* p = row8(y) + size_t(x) * 4;
@@ -147,15 +152,19 @@ class ColorTarget {
   const uint8_t* row8(int y) const {
     return reinterpret_cast<const uint8_t*>(storage_.data()) + size_t(y) * size_t(pitch_) * 4;
   }
-  float* row32f(int y) { return reinterpret_cast<float*>(storage_.data()) + size_t(y) * size_t(pitch_) * 4; }
+  // Row y of a float target: channels() floats per texel.
+  float* row32f(int y) {
+    return reinterpret_cast<float*>(storage_.data()) + size_t(y) * size_t(pitch_) * size_t(channels_);
+  }
   const float* row32f(int y) const {
-    return reinterpret_cast<const float*>(storage_.data()) + size_t(y) * size_t(pitch_) * 4;
+    return reinterpret_cast<const float*>(storage_.data()) + size_t(y) * size_t(pitch_) * size_t(channels_);
   }
 
  private:
   int width_, height_, pitch_, padded_height_;
   ColorFormat format_;
   bool srgb_;
+  int channels_;
   AlignedBuffer storage_;
 };
 

@@ -70,7 +70,12 @@ constexpr TexelFormat texel_format_of(raster::DepthFormat f) {
 }
 
 constexpr TexelFormat texel_format_of(raster::ColorFormat f, bool srgb) {
-  if (f == raster::ColorFormat::rgba32f) return TexelFormat::rgba32f;
+  switch (f) {
+    case raster::ColorFormat::rgba32f: return TexelFormat::rgba32f;
+    case raster::ColorFormat::rg32f: return TexelFormat::rg32f;
+    case raster::ColorFormat::r32f: return TexelFormat::r32f;
+    case raster::ColorFormat::rgba8: break;
+  }
   return srgb ? TexelFormat::rgba8_srgb : TexelFormat::rgba8;
 }
 

@@ -120,6 +120,39 @@ inline void store_rows4(VecI32 a, uint16_t* r0, uint16_t* r1) {
 }
 // a / b, IEEE division per lane.
 inline VecF32 div(VecF32 a, VecF32 b) { return {_mm256_div_ps(a.v, b.v)}; }
+// Float colour targets with two or four channels per texel: eight lanes of each channel (lanes 0–3 one row of
+// four texels, 4–7 the row above) stored interleaved (r g r g …, or r g b a …) at r0 and r1.
+inline void store_rows4_interleaved(VecF32 a, VecF32 b, float* r0, float* r1) {
+  const __m256 lo = _mm256_unpacklo_ps(a.v, b.v), hi = _mm256_unpackhi_ps(a.v, b.v);
+  _mm256_storeu_ps(r0, _mm256_permute2f128_ps(lo, hi, 0x20));
+  _mm256_storeu_ps(r1, _mm256_permute2f128_ps(lo, hi, 0x31));
+}
+inline void store_rows4_interleaved(VecF32 a, VecF32 b, VecF32 c, VecF32 d, float* r0, float* r1) {
+  const __m256 ab0 = _mm256_unpacklo_ps(a.v, b.v), ab1 = _mm256_unpackhi_ps(a.v, b.v);
+  const __m256 cd0 = _mm256_unpacklo_ps(c.v, d.v), cd1 = _mm256_unpackhi_ps(c.v, d.v);
+  const __m256 p0 = _mm256_shuffle_ps(ab0, cd0, 0x44), p1 = _mm256_shuffle_ps(ab0, cd0, 0xEE);
+  const __m256 p2 = _mm256_shuffle_ps(ab1, cd1, 0x44), p3 = _mm256_shuffle_ps(ab1, cd1, 0xEE);
+  _mm256_storeu_ps(r0, _mm256_permute2f128_ps(p0, p1, 0x20));
+  _mm256_storeu_ps(r0 + 8, _mm256_permute2f128_ps(p2, p3, 0x20));
+  _mm256_storeu_ps(r1, _mm256_permute2f128_ps(p0, p1, 0x31));
+  _mm256_storeu_ps(r1 + 8, _mm256_permute2f128_ps(p2, p3, 0x31));
+}
+// The inverse of the stores above: s0 holds four texels of a row interleaved (r g r g …), s1 four of the row
+// above; a and b get their channels, lanes 0–3 from s0 and 4–7 from s1.
+inline void deinterleave_rows4(VecF32 s0, VecF32 s1, VecF32& a, VecF32& b) {
+  a.v = _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(_mm256_shuffle_ps(s0.v, s1.v, 0x88)), 0xD8));
+  b.v = _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(_mm256_shuffle_ps(s0.v, s1.v, 0xDD)), 0xD8));
+}
+// Four channels: s0 and t0 hold texels 0–1 and 2–3 of a row (r g b a r g b a), s1 and t1 those of the row above.
+inline void deinterleave_rows4(VecF32 s0, VecF32 t0, VecF32 s1, VecF32 t1, VecF32& a, VecF32& b, VecF32& c,
+                               VecF32& d) {
+  const __m256 x0 = _mm256_permute2f128_ps(s0.v, s1.v, 0x20), x1 = _mm256_permute2f128_ps(s0.v, s1.v, 0x31);
+  const __m256 x2 = _mm256_permute2f128_ps(t0.v, t1.v, 0x20), x3 = _mm256_permute2f128_ps(t0.v, t1.v, 0x31);
+  const __m256 u0 = _mm256_unpacklo_ps(x0, x1), u1 = _mm256_unpackhi_ps(x0, x1);
+  const __m256 u2 = _mm256_unpacklo_ps(x2, x3), u3 = _mm256_unpackhi_ps(x2, x3);
+  a.v = _mm256_shuffle_ps(u0, u2, 0x44), b.v = _mm256_shuffle_ps(u0, u2, 0xEE);
+  c.v = _mm256_shuffle_ps(u1, u3, 0x44), d.v = _mm256_shuffle_ps(u1, u3, 0xEE);
+}
 
 // ---- For the depth-only back end and the SIMD triangle setup.
 // The largest lane (lanes are not NaN).

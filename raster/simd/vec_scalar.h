@@ -83,6 +83,28 @@ inline VecI32 load_rows4(const uint32_t* r0, const uint32_t* r1) { VecI32 r; std
 inline void store_rows4(VecI32 a, uint32_t* r0, uint32_t* r1) { std::memcpy(r0, a.v, 16); std::memcpy(r1, a.v + 4, 16); }
 inline VecI32 load_rows4(const uint16_t* r0, const uint16_t* r1) { VecI32 r; for (int i = 0; i < 4; ++i) r.v[i] = r0[i], r.v[i + 4] = r1[i]; return r; }
 inline void store_rows4(VecI32 a, uint16_t* r0, uint16_t* r1) { for (int i = 0; i < 4; ++i) r0[i] = uint16_t(a.v[i]), r1[i] = uint16_t(a.v[i + 4]); }
+// Interleaved two- and four-channel rows and their inverse (see vec_avx2.h).
+inline void store_rows4_interleaved(VecF32 a, VecF32 b, float* r0, float* r1) {
+  for (int i = 0; i < 4; ++i) r0[2 * i] = a.v[i], r0[2 * i + 1] = b.v[i], r1[2 * i] = a.v[i + 4], r1[2 * i + 1] = b.v[i + 4];
+}
+inline void store_rows4_interleaved(VecF32 a, VecF32 b, VecF32 c, VecF32 d, float* r0, float* r1) {
+  for (int i = 0; i < 4; ++i) {
+    r0[4 * i] = a.v[i], r0[4 * i + 1] = b.v[i], r0[4 * i + 2] = c.v[i], r0[4 * i + 3] = d.v[i];
+    r1[4 * i] = a.v[i + 4], r1[4 * i + 1] = b.v[i + 4], r1[4 * i + 2] = c.v[i + 4], r1[4 * i + 3] = d.v[i + 4];
+  }
+}
+inline void deinterleave_rows4(VecF32 s0, VecF32 s1, VecF32& a, VecF32& b) {
+  for (int i = 0; i < 4; ++i) a.v[i] = s0.v[2 * i], b.v[i] = s0.v[2 * i + 1], a.v[i + 4] = s1.v[2 * i], b.v[i + 4] = s1.v[2 * i + 1];
+}
+inline void deinterleave_rows4(VecF32 s0, VecF32 t0, VecF32 s1, VecF32 t1, VecF32& a, VecF32& b, VecF32& c,
+                               VecF32& d) {
+  VecF32* out[4] = {&a, &b, &c, &d};
+  for (int ch = 0; ch < 4; ++ch)
+    for (int i = 0; i < 2; ++i) {
+      out[ch]->v[i] = s0.v[4 * i + ch], out[ch]->v[i + 2] = t0.v[4 * i + ch];
+      out[ch]->v[i + 4] = s1.v[4 * i + ch], out[ch]->v[i + 6] = t1.v[4 * i + ch];
+    }
+}
 // a / b, IEEE division per lane.
 inline VecF32 div(VecF32 a, VecF32 b) { return VecF32::map(a, b, [](float x, float y) { return x / y; }); }
 

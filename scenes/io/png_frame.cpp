@@ -36,7 +36,7 @@ std::vector<uint8_t> srgb8_top_first(const raster::ColorTarget& target, bool alp
         for (int c = 0; c < 3; ++c) dst[c] = target.srgb() ? p[c] : encode[p[c]];
         if (alpha) dst[3] = p[3];
       } else {
-        const float* p = target.row32f(y) + size_t(x) * 4;
+        const glm::vec4 p = target.read(x, y);  // a float target of fewer channels: missing ones 0, alpha 1
         for (int c = 0; c < 3; ++c) dst[c] = to_byte(raster::srgb_encode(std::isnan(p[c]) ? 0.0f : p[c]));
         if (alpha) dst[3] = to_byte(p[3]);
       }

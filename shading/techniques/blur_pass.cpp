@@ -1,5 +1,5 @@
 // The encode and blur passes of the filterable maps (see blur_pass.h): full-screen triangles with a fragment
-// shader each, drawn without depth into an RGBA32F target.
+// shader each, drawn without depth into a float target of the moment kind's channels.
 #include "shading/techniques/blur_pass.h"
 
 #include <algorithm>
@@ -26,13 +26,16 @@ struct EncodeShader : FullScreenShader<EncodeShader> {
   }
 };
 
-// The box filter along one axis over the first kChannels components, summed in tap order. The wide path
-// gathers, per channel, the texels its eight lanes share (a row segment of 4 + 2 radius texels for each of its
-// two rows, or a column of 2 + 2 radius rows of 4 texels) once, then adds one eight-lane vector per tap: the
-// same additions in the same order as texel(), so both paths agree bit for bit.
+// The box filter along one axis over the kChannels floats of a float target's texel, summed in tap order.
+// The wide path sums the taps in the target's own interleaved layout: each tap of a row of four output texels
+// is one unaligned load of those four texels' worth of floats (horizontal: shifted along the source row;
+// vertical: the same columns of another row), added in the same order as texel() adds them, then split into
+// channels. Every float is the same sum as texel()'s, so both paths agree bit for bit. A group whose taps
+// would need clamping (within radius + 3 texels of an edge) or that has helper lanes past the edge takes the
+// per-texel path.
 template <int kChannels, bool kVertical>
 struct BlurShader : FullScreenShader<BlurShader<kChannels, kVertical>> {
-  static constexpr int kMaxRadius = 16;
+  using Base = FullScreenShader<BlurShader<kChannels, kVertical>>;
   const raster::ColorTarget* src = nullptr;
   int radius = 1;
   float scale = 1.0f;  // 1 / (2 radius + 1)
@@ -43,7 +46,7 @@ struct BlurShader : FullScreenShader<BlurShader<kChannels, kVertical>> {
     for (int k = -radius; k <= radius; ++k) {
       const int xx = kVertical ? x : std::clamp(x + k, 0, w - 1);
       const int yy = kVertical ? std::clamp(y + k, 0, h - 1) : y;
-      const float* t = src->row32f(yy) + size_t(xx) * 4;
+      const float* t = src->row32f(yy) + size_t(xx) * kChannels;
       for (int c = 0; c < kChannels; ++c) sum[c] += t[c];
     }
     glm::vec4 out(0.0f);
@@ -55,56 +58,50 @@ struct BlurShader : FullScreenShader<BlurShader<kChannels, kVertical>> {
     alignas(32) float fx[8], fy[8];
     q.frag_x.store(fx), q.frag_y.store(fy);
     const int x0 = int(fx[0]), y0 = int(fy[0]);
-    constexpr int kSpan = 4 + 2 * kMaxRadius;
-    // kVertical: line[c][i] holds rows y0 − radius + i, 4 texels each (i in [0, 2 + 2 radius)).
-    // Horizontal: line[c][r][i] holds texel x0 − radius + i of row y0 + r.
-    alignas(32) float line[kChannels][2][kSpan + 8];
-    alignas(32) float col[kChannels][2 + 2 * kMaxRadius][4];
-    auto clamp_x = [&](int x) { return std::clamp(x, 0, w - 1); };
-    auto clamp_y = [&](int y) { return std::clamp(y, 0, h - 1); };
-    // The source lines the block to the right (8 pixels on) will read, asked for now: the loads of a pass over
-    // a 2048² RGBA32F target waited on memory (53 % of the horizontal pass's samples on one load). A prefetch
-    // never faults, so addresses past a row's end need no test.
-    const int ahead = clamp_x(x0 + 8 + radius + 3);
-    if constexpr (kVertical) {
-      for (int i = 0; i < 2 + 2 * radius; ++i)
-        __builtin_prefetch(src->row32f(clamp_y(y0 - radius + i)) + size_t(ahead) * 4, 0, 3);
-    } else {
-      for (int r = 0; r < 2; ++r) __builtin_prefetch(src->row32f(clamp_y(y0 + r)) + size_t(ahead) * 4, 0, 3);
-    }
-    if constexpr (kVertical) {
-      for (int i = 0; i < 2 + 2 * radius; ++i) {
-        const float* row = src->row32f(clamp_y(y0 - radius + i));
-        for (int l = 0; l < 4; ++l) {
-          const float* t = row + size_t(clamp_x(x0 + l)) * 4;
-          for (int c = 0; c < kChannels; ++c) col[c][i][l] = t[c];
-        }
+    const bool inside = kVertical ? x0 + 3 < w : (x0 - radius >= 0 && x0 + 3 + radius < w && y0 + 1 < h);
+    if (!inside) return Base::fragment_pair(q, out);
+    // The pipeline walks a tile's 8×8 blocks left to right, then the next row of blocks: the source lines that
+    // row will read first, eight rows up, are asked for now (the hardware's prefetch does not follow 64-texel
+    // runs one row pitch apart; without this three quarters of the pass waited on these loads). A prefetch
+    // never faults, so rows past the top need no test.
+    const int ahead = y0 + 8 + (kVertical ? radius : 0);
+    for (int r = 0; r < 2; ++r)
+      __builtin_prefetch(src->row32f(std::min(ahead + r, h - 1)) + size_t(x0) * kChannels, 0, 3);
+    // Four texels of kChannels floats: one vector of eight floats per two texels (or four floats, half a
+    // vector, for one channel).
+    constexpr int kVectors = kChannels == 4 ? 2 : 1;
+    VecF32 sum[2][kVectors];
+    for (auto& r : sum)
+      for (auto& v : r) v = VecF32::splat(0.0f);
+    if constexpr (kChannels == 1) {
+      // One channel: both rows' four texels fit one vector, lanes as the pipeline orders them.
+      for (int k = -radius; k <= radius; ++k) {
+        const float* r0 = kVertical ? src->row32f(std::clamp(y0 + k, 0, h - 1)) + x0 : src->row32f(y0) + x0 + k;
+        const float* r1 = kVertical ? src->row32f(std::clamp(y0 + 1 + k, 0, h - 1)) + x0 : src->row32f(y0 + 1) + x0 + k;
+        sum[0][0] = sum[0][0] + raster::simd::load_rows4(r0, r1);
       }
+      out.color[0] = sum[0][0] * VecF32::splat(scale);
+      for (int c = 1; c < 4; ++c) out.color[size_t(c)] = VecF32::splat(0.0f);
+      return;
     } else {
       for (int r = 0; r < 2; ++r) {
-        const float* row = src->row32f(clamp_y(y0 + r));
-        for (int i = 0; i < 4 + 2 * radius; ++i) {
-          const float* t = row + size_t(clamp_x(x0 - radius + i)) * 4;
-          for (int c = 0; c < kChannels; ++c) line[c][r][i] = t[c];
+        for (int k = -radius; k <= radius; ++k) {
+          const float* t = kVertical ? src->row32f(std::clamp(y0 + r + k, 0, h - 1)) + size_t(x0) * kChannels
+                                     : src->row32f(y0 + r) + ptrdiff_t(x0 + k) * kChannels;
+          for (int v = 0; v < kVectors; ++v) sum[r][v] = sum[r][v] + VecF32::load(t + 8 * v);
         }
       }
-    }
-    for (int c = 0; c < 4; ++c) out.color[size_t(c)] = VecF32::splat(0.0f);
-    for (int c = 0; c < kChannels; ++c) {
-      VecF32 sum = VecF32::splat(0.0f);
-      for (int k = 0; k <= 2 * radius; ++k) {
-        if constexpr (kVertical) sum = sum + raster::simd::load_rows4(col[c][k], col[c][k + 1]);
-        else sum = sum + raster::simd::load_rows4(line[c][0] + k, line[c][1] + k);
+      auto& c = out.color;
+      if constexpr (kChannels == 2) {
+        raster::simd::deinterleave_rows4(sum[0][0], sum[1][0], c[0], c[1]);
+        c[2] = c[3] = VecF32::splat(0.0f);
+      } else {
+        raster::simd::deinterleave_rows4(sum[0][0], sum[0][1], sum[1][0], sum[1][1], c[0], c[1], c[2], c[3]);
       }
-      out.color[size_t(c)] = sum * VecF32::splat(scale);
+      for (int i = 0; i < kChannels; ++i) c[size_t(i)] = c[size_t(i)] * VecF32::splat(scale);
     }
   }
 };
-
-void check_float_target(const raster::ColorTarget& t, const char* what) {
-  if (t.format() != raster::ColorFormat::rgba32f)
-    throw std::logic_error(std::string(what) + ": the filterable map passes need an rgba32f target");
-}
 
 template <int kChannels>
 raster::DrawStats blur_with(raster::Renderer& renderer, const raster::ColorTarget& src, raster::ColorTarget& dst,
@@ -120,6 +117,14 @@ raster::DrawStats blur_with(raster::Renderer& renderer, const raster::ColorTarge
 
 }  // namespace
 
+raster::ColorFormat moment_format(MomentKind kind) {
+  switch (moment_channels(kind)) {
+    case 1: return raster::ColorFormat::r32f;
+    case 2: return raster::ColorFormat::rg32f;
+    default: return raster::ColorFormat::rgba32f;
+  }
+}
+
 raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::DepthTarget& src, const LightDepth& depth,
                                  const MomentParams& p, raster::ColorTarget& out) {
   return encode_moments(renderer, src, raster::Rect{0, 0, src.width(), src.height()}, depth, p, out);
@@ -127,7 +132,8 @@ raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::Depth
 
 raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::DepthTarget& src, raster::Rect region,
                                  const LightDepth& depth, const MomentParams& p, raster::ColorTarget& out) {
-  check_float_target(out, "encode_moments");
+  if (out.format() != moment_format(p.kind))
+    throw std::logic_error("encode_moments: the moment target's format must be moment_format(kind)");
   if (region.x < 0 || region.y < 0 || region.width < 1 || region.height < 1 ||
       region.x + region.width > src.width() || region.y + region.height > src.height())
     throw std::logic_error("encode_moments: the region lies outside the depth map");
@@ -139,27 +145,25 @@ raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::Depth
 }
 
 raster::DrawStats blur_pass(raster::Renderer& renderer, const raster::ColorTarget& src, raster::ColorTarget& dst,
-                            int radius, int channels, bool vertical) {
-  check_float_target(src, "blur_pass");
-  check_float_target(dst, "blur_pass");
+                            int radius, bool vertical) {
+  if (src.channels() == 0) throw std::logic_error("blur_pass: the source must be a float target");
   if (&src == &dst) throw std::logic_error("blur_pass: source and destination must differ");
-  if (src.width() != dst.width() || src.height() != dst.height())
-    throw std::logic_error("blur_pass: source and destination must have the same size");
+  if (src.format() != dst.format() || src.width() != dst.width() || src.height() != dst.height())
+    throw std::logic_error("blur_pass: source and destination must have the same size and format");
   if (radius < 0 || radius > 16) throw std::logic_error("blur_pass: radius outside 0..16");
-  switch (channels) {
+  switch (src.channels()) {
     case 1: return blur_with<1>(renderer, src, dst, radius, vertical);
     case 2: return blur_with<2>(renderer, src, dst, radius, vertical);
-    case 4: return blur_with<4>(renderer, src, dst, radius, vertical);
-    default: throw std::logic_error("blur_pass: channels must be 1, 2 or 4");
+    default: return blur_with<4>(renderer, src, dst, radius, vertical);
   }
 }
 
 raster::DrawStats blur_map(raster::Renderer& renderer, raster::ColorTarget& map, raster::ColorTarget& scratch,
-                           int radius, int channels) {
+                           int radius) {
   raster::DrawStats stats;
   if (radius == 0) return stats;
-  stats += blur_pass(renderer, map, scratch, radius, channels, false);
-  stats += blur_pass(renderer, scratch, map, radius, channels, true);
+  stats += blur_pass(renderer, map, scratch, radius, false);
+  stats += blur_pass(renderer, scratch, map, radius, true);
   return stats;
 }
 

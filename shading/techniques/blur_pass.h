@@ -1,7 +1,8 @@
 // The passes that turn a depth map into a filterable one, each an ordinary draw on the pipeline: a full-screen
 // triangle whose fragment shader reads the previous target. The encode pass writes each texel's moments
-// (moments.h) into an RGBA32F target; the blur passes are a separable box filter, horizontal then vertical,
-// edges clamped. Like every draw they run tile by tile on the renderer's workers and every pixel is a pure
+// (moments.h) into a float target with as many channels as the kind stores (moment_format: R32F for ESM,
+// RG32F for VSM and EVSM2, RGBA32F for EVSM4); the blur passes are a separable box filter, horizontal then
+// vertical, edges clamped. Like every draw they run tile by tile on the renderer's workers and every pixel is a pure
 // function of the source, so the result is the same at any thread count.
 #pragma once
 #include "raster/renderer.h"
@@ -9,6 +10,9 @@
 #include "shading/techniques/moments.h"
 
 namespace shading::tech {
+
+// The float format of a moment kind's targets: one channel per stored moment.
+raster::ColorFormat moment_format(MomentKind kind);
 
 // The encode pass: out(x, y) = moments(p, depth.from_window(src(x, y))). out has src's size.
 raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::DepthTarget& src, const LightDepth& depth,
@@ -20,13 +24,12 @@ raster::DrawStats encode_moments(raster::Renderer& renderer, const raster::Depth
                                  const LightDepth& depth, const MomentParams& p, raster::ColorTarget& out);
 
 // One blur pass: dst(x, y) = mean of src over 2·radius + 1 texels along x (or y with `vertical`), coordinates
-// clamped to the edge; only the first `channels` components are filtered (the rest are written 0). radius is
-// 0..16.
+// clamped to the edge, every channel of the float format src and dst share. radius is 0..16.
 raster::DrawStats blur_pass(raster::Renderer& renderer, const raster::ColorTarget& src, raster::ColorTarget& dst,
-                            int radius, int channels, bool vertical);
+                            int radius, bool vertical);
 
 // Both blur passes: map → scratch (horizontal) → map (vertical). Nothing for radius 0.
 raster::DrawStats blur_map(raster::Renderer& renderer, raster::ColorTarget& map, raster::ColorTarget& scratch,
-                           int radius, int channels);
+                           int radius);
 
 }  // namespace shading::tech

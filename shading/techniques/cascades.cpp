@@ -220,19 +220,12 @@ std::unique_ptr<LightShadow> plan_cascades(const LightDesc& light, const ShadowC
     throw TechniqueError(p.where("stabilize") + ": a LiSPSM warp (cascade_warp = lispsm) changes with every view "
                                                 "and cannot be stabilised");
   std::optional<SliceMoments> moments;
-  if (const std::string kind = p.text("moments"); kind != "none") {
-    if (s.lispsm)
-      throw TechniqueError(p.where("moments") + ": " + kind + " needs orthographic slices; a LiSPSM warp "
-                           "(cascade_warp = lispsm) stores a depth that is not linear along the light");
-    if (c.filter != FilterKind::pcf || c.filter_params.pcf_taps)
-      throw TechniqueError(c.where.substr(0, c.where.size() - std::string_view("params.").size()) + "filter: " +
-                           std::string(to_string(c.filter)) + " is not used with moments = " + kind +
-                           " (the blurred moments are read with one bilinear lookup)");
-    const MomentKind k = kind == "esm" ? MomentKind::esm
-                       : kind == "vsm" ? MomentKind::vsm
-                       : kind == "evsm2" ? MomentKind::evsm2 : MomentKind::evsm4;
+  if (const std::string kind = p.text("moments"); kind != "none" && s.lispsm)
+    throw TechniqueError(p.where("moments") + ": " + kind + " needs orthographic slices; a LiSPSM warp "
+                         "(cascade_warp = lispsm) stores a depth that is not linear along the light");
+  if (const std::optional<MomentKind> k = moments_param(c)) {
     moments.emplace();
-    moments->params = moment_params(k, c);
+    moments->params = moment_params(*k, c);
     moments->blur_radius = int(p.number("blur_radius"));
   }
   CascadePlan plan = plan_cascade_fits(light, s, c.map_size, in);

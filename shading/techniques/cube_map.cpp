@@ -1,6 +1,9 @@
 // Planning, building and reader setup of the cube shadow map (see cube_map.h).
 #include "shading/techniques/cube_map.h"
 
+#include <algorithm>
+#include <array>
+
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -41,6 +44,27 @@ TextureCube cube_texture(const ShadowMapSet& set) {
     faces[size_t(f)] = Texture2D::view(*set.targets.at(p.target), p.viewport);
   }
   return TextureCube(std::move(faces));
+}
+
+raster::DrawStats build_cube_moments(raster::Renderer& renderer, const ShadowMapSet& set, bool seamless,
+                                     CubeMoments& m) {
+  raster::DrawStats stats;
+  std::array<Texture2D, 6> views;
+  for (size_t f = 0; f < 6; ++f) {
+    stats += filter_pass(renderer, set, f, LightDepth{}, m.params, m.blur_radius, m.faces[f]);
+    views[f] = m.faces[f].view;
+  }
+  m.cube = TextureCube(std::move(views));
+  m.sampler.seamless_cube = seamless;
+  return stats;
+}
+
+float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, glm::vec3 p, glm::vec3 n) {
+  const OmniRef o = omni_ref(r, p, n);
+  const glm::vec3 d = o.q - r.position;
+  if (r.hemispherical && glm::dot(d, r.direction) < 0.0f) return 0.0f;
+  const float ref = glm::length(d) / r.range - o.bias;
+  return moment_visibility(m.params, texture_at(m.cube, m.sampler, d, 0.0f), std::min(ref, 1.0f));
 }
 
 OmniReader make_cube_reader(const ShadowMapSet& set, const OmniLight& light, const OmniSettings& s) {

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "shading/lookup_cube.h"
+#include "shading/techniques/filtered.h"
 #include "shading/techniques/omni.h"
 
 namespace shading::tech {
@@ -21,6 +22,26 @@ raster::DrawStats build_cube_map(raster::Renderer& renderer, ShadowMapSet& set, 
 TextureCube cube_texture(const ShadowMapSet& set);
 
 OmniReader make_cube_reader(const ShadowMapSet& set, const OmniLight& light, const OmniSettings& s);
+
+// The faces turned filterable (the cube's `moments` parameter): each face's radial distance (already linear,
+// distance / range) encoded into its own moment target of the face's size and blurred there, so the blur clamps
+// at the face's edges and does not reach into the neighbouring face; read with one bilinear lookup of the cube
+// of the six moment maps (seamless across the edges when `seamless` is on, as the depth cube's lookups) and the
+// kind's visibility formula against distance / range minus the bias.
+struct CubeMoments {
+  MomentParams params;
+  int blur_radius = 2;
+  std::array<MomentMap, 6> faces;
+  TextureCube cube;  // views of the six blurred faces, after build
+  Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
+};
+
+// Encodes and blurs the six faces of a built cube map set into m.faces and sets up m.cube.
+raster::DrawStats build_cube_moments(raster::Renderer& renderer, const ShadowMapSet& set, bool seamless,
+                                     CubeMoments& m);
+
+// Visibility of world point p (unit normal n) from the faces' moments: 0 behind a hemispherical light.
+float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, glm::vec3 p, glm::vec3 n);
 
 // Taps for the Poisson family on a cube: st are the face coordinates of the query's face; a tap at st + offset
 // goes back to a direction on that face's plane and is looked up like any other (a seamless lookup then reads

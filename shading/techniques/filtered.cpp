@@ -2,6 +2,8 @@
 #include "shading/techniques/filtered.h"
 
 #include <algorithm>
+#include <string>
+#include <string_view>
 
 #include "shading/lookup.h"
 #include "shading/techniques/blur_pass.h"
@@ -42,15 +44,23 @@ float filtered_visibility(const FilteredReader& r, glm::vec3 p, glm::vec3 n) {
 raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& set, size_t pass,
                               const MomentParams& params, int blur_radius, MomentMap& out) {
   const ShadowPass& p = set.passes.at(pass);
+  return filter_pass(renderer, set, pass, LightDepth::of(p.proj, p.perspective), params, blur_radius, out);
+}
+
+raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& set, size_t pass,
+                              const LightDepth& light_depth, const MomentParams& params, int blur_radius,
+                              MomentMap& out) {
+  const ShadowPass& p = set.passes.at(pass);
   const raster::DepthTarget& depth = *set.targets.at(p.target);
   const int w = p.viewport.width, h = p.viewport.height;
-  if (!out.map || out.map->width() != w || out.map->height() != h) {
-    out.map = std::make_unique<raster::ColorTarget>(w, h, raster::ColorFormat::rgba32f);
-    out.scratch = std::make_unique<raster::ColorTarget>(w, h, raster::ColorFormat::rgba32f);
+  const raster::ColorFormat format = moment_format(params.kind);
+  if (!out.map || out.map->width() != w || out.map->height() != h || out.map->format() != format) {
+    out.map = std::make_unique<raster::ColorTarget>(w, h, format);
+    out.scratch = std::make_unique<raster::ColorTarget>(w, h, format);
   }
   raster::DrawStats stats =
-      encode_moments(renderer, depth, p.viewport, LightDepth::of(p.proj, p.perspective), params, *out.map);
-  stats += blur_map(renderer, *out.map, *out.scratch, blur_radius, moment_channels(params.kind));
+      encode_moments(renderer, depth, p.viewport, light_depth, params, *out.map);
+  stats += blur_map(renderer, *out.map, *out.scratch, blur_radius);
   out.view = Texture2D::view(*out.map);
   return stats;
 }
@@ -98,6 +108,18 @@ MomentParams moment_params(MomentKind kind, const ShadowConfig& c) {
     m.negative = float(p.number("evsm_negative"));
   }
   return m;
+}
+
+std::optional<MomentKind> moments_param(const ShadowConfig& c) {
+  const std::string kind = Params(c).text("moments");
+  if (kind == "none") return std::nullopt;
+  if (c.filter != FilterKind::pcf || c.filter_params.pcf_taps)
+    throw TechniqueError(c.where.substr(0, c.where.size() - std::string_view("params.").size()) + "filter: " +
+                         std::string(to_string(c.filter)) + " is not used with moments = " + kind +
+                         " (the blurred moments are read with one bilinear lookup)");
+  return kind == "esm" ? MomentKind::esm
+       : kind == "vsm" ? MomentKind::vsm
+       : kind == "evsm2" ? MomentKind::evsm2 : MomentKind::evsm4;
 }
 
 namespace {

@@ -1,10 +1,11 @@
 // The filterable shadow maps: exponential (ESM), variance (VSM) and exponential variance (EVSM, two or four
 // moments) for directional and spot lights, on the classic technique's single map. Building is four passes on
-// the pipeline: the depth pass (depth_pass.h, the classic state), the encode pass (depth → moments, RGBA32F)
-// and the two blur passes (blur_pass.h). Reading is one bilinear lookup of the blurred moments per point and
-// the kind's visibility formula (moments.h). Formulas, parameters and limits: docs/filtered-shadows.md.
+// the pipeline: the depth pass (depth_pass.h, the classic state), the encode pass (depth → moments, a float
+// target of the kind's channels) and the two blur passes (blur_pass.h). Reading is one bilinear lookup of the
+// blurred moments per point and the kind's visibility formula (moments.h). Formulas, parameters and limits: docs/filtered-shadows.md.
 #pragma once
 #include <memory>
+#include <optional>
 #include <span>
 
 #include <glm/mat4x4.hpp>
@@ -27,7 +28,7 @@ struct FilteredReader {
   glm::vec3 position{0.0f}, direction{0.0f, -1.0f, 0.0f};
   BiasParams bias;  // constant, slope (in linear depth units) and normal offset; offset acts in the depth pass
   MomentParams params;
-  Texture2D moments;  // view of the blurred RGBA32F target
+  Texture2D moments;  // view of the blurred moment target (R32F, RG32F or RGBA32F: moment_format)
   Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
 };
 
@@ -46,9 +47,18 @@ struct MomentMap {
   Texture2D view;
 };
 
-// Encodes pass `pass` of `set` (built) into `out` and blurs it; the targets are (re)made at the pass's size.
+// Encodes pass `pass` of `set` (built) into `out` and blurs it; the targets are (re)made at the pass's size. The
+// stored depth is made linear as the pass's projection asks (LightDepth::of), or as `depth` says (a cube
+// face's radial distance is linear already).
 raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& set, size_t pass,
                               const MomentParams& params, int blur_radius, MomentMap& out);
+raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& set, size_t pass,
+                              const LightDepth& depth, const MomentParams& params, int blur_radius, MomentMap& out);
+
+// The `moments` parameter of the techniques that take one (cascades, cube): none, or the kind. Throws
+// TechniqueError for a filter other than the default pcf, or pcf_taps, beside a kind: the moments are read with
+// one bilinear lookup, so the filter would silently do nothing.
+std::optional<MomentKind> moments_param(const ShadowConfig& config);
 
 // A built classic map set (one pass) turned filterable: its moment map and the reader.
 struct FilteredMap {

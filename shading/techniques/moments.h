@@ -14,7 +14,7 @@ namespace shading::tech {
 
 enum class MomentKind : uint8_t { esm, vsm, evsm2, evsm4 };
 
-// Channels a kind stores (the rest of the RGBA32F texel is 0): ESM 1, VSM and EVSM2 2, EVSM4 4.
+// Channels a kind stores, as many as its target has (R32F, RG32F, RGBA32F): ESM 1, VSM and EVSM2 2, EVSM4 4.
 constexpr int moment_channels(MomentKind k) {
   return k == MomentKind::esm ? 1 : (k == MomentKind::evsm4 ? 4 : 2);
 }

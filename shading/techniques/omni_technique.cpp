@@ -3,6 +3,7 @@
 // face, hemisphere or region with its pass matrices.
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "shading/techniques/omni_read.h"
@@ -45,7 +46,8 @@ Technique technique_of(OmniKind k) {
 
 class OmniShadow final : public LightShadow {
  public:
-  OmniShadow(OmniKind kind, const OmniLight& light, const OmniSettings& s) : kind_(kind), light_(light), s_(s) {
+  OmniShadow(OmniKind kind, const OmniLight& light, const OmniSettings& s, std::optional<CubeMoments> moments)
+      : kind_(kind), light_(light), s_(s), moments_(std::move(moments)) {
     switch (kind_) {
       case OmniKind::cube: set_ = plan_cube_map(light_, s_); break;
       case OmniKind::paraboloid: set_ = plan_paraboloid_map(light_, s_); break;
@@ -59,6 +61,7 @@ class OmniShadow final : public LightShadow {
       case OmniKind::cube:
         stats = build_cube_map(renderer, set_, light_, s_, c);
         reader_ = make_cube_reader(set_, light_, s_);
+        if (moments_) stats += build_cube_moments(renderer, set_, s_.seamless, *moments_);
         break;
       case OmniKind::paraboloid:
         stats = build_paraboloid_map(renderer, set_, light_, s_, c);
@@ -73,6 +76,10 @@ class OmniShadow final : public LightShadow {
   }
 
   void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const override {
+    if (moments_) {
+      for (size_t i = 0; i < q.size(); ++i) vis[i] = cube_moment_visibility(reader_, *moments_, q[i].p, q[i].n);
+      return;
+    }
     omni_visibility(reader_, q, vis);
   }
 
@@ -113,6 +120,7 @@ class OmniShadow final : public LightShadow {
   OmniSettings s_;
   ShadowMapSet set_;
   OmniReader reader_;
+  std::optional<CubeMoments> moments_;  // cube with `moments`
 };
 
 std::unique_ptr<LightShadow> plan_omni(OmniKind kind, const LightDesc& light, const ShadowConfig& c) {
@@ -141,7 +149,15 @@ std::unique_ptr<LightShadow> plan_omni(OmniKind kind, const LightDesc& light, co
     throw TechniqueError("map_size: the pyramid map side " + std::to_string(s.map_size) +
                          " must be even (two halves per axis)");
   const Params p(c);
-  if (kind == OmniKind::cube) s.seamless = p.flag("seamless");
+  std::optional<CubeMoments> moments;
+  if (kind == OmniKind::cube) {
+    s.seamless = p.flag("seamless");
+    if (const std::optional<MomentKind> k = moments_param(c)) {
+      moments.emplace();
+      moments->params = moment_params(*k, c);
+      moments->blur_radius = int(p.number("blur_radius"));
+    }
+  }
   if (kind == OmniKind::paraboloid) {
     if (p.text("paraboloid_pack") == "rgba8") s.packing = DepthPacking::rgba8;
     const std::string split = p.text("split_plane");
@@ -152,7 +168,7 @@ std::unique_ptr<LightShadow> plan_omni(OmniKind kind, const LightDesc& light, co
                              "' is not light, x, y, z, -x, -y, -z or a non-zero normal a,b,c");
     }
   }
-  return std::make_unique<OmniShadow>(kind, l, s);
+  return std::make_unique<OmniShadow>(kind, l, s, std::move(moments));
 }
 
 }  // namespace

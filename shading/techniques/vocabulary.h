@@ -116,9 +116,6 @@ inline constexpr ParamSpec kClassicParams[] = {
      "fit = tutorial, across the frames of one run (--frames, --animate): the box grows at once and shrinks by "
      "1 - fit_smoothing of the difference per frame (0: no smoothing)", 0, 0.99},
 };
-inline constexpr ParamSpec kCubeParams[] = {
-    {"seamless", "--seamless", ParamKind::flag, "true", "cube: filter across face edges (GL_TEXTURE_CUBE_MAP_SEAMLESS)"},
-};
 inline constexpr ParamSpec kParaboloidParams[] = {
     {"paraboloid_pack", "--paraboloid-pack", ParamKind::choice, "float",
      "paraboloid depth storage: float, or base-256 packed into an RGBA8 target", 0, 0, {"float", "rgba8"}},
@@ -181,30 +178,48 @@ inline constexpr ParamSpec kFaceParams[] = {
 // EVSM stores exp(c·x) and its square with x in [-1, 1], so c <= ln(FLT_MAX) / 2 = 44.36.
 inline constexpr ParamSpec kBlurParam = {
     "blur_radius", "--blur-radius", ParamKind::integer, "2",
-    "esm, vsm, evsm2, evsm4, cascades' moments: box blur radius in texels of the separable blur passes (0: no blur)", 0, 16};
+    "esm, vsm, evsm2, evsm4, cascades' and cube's moments: box blur radius in texels of the separable blur passes (0: no blur)", 0, 16};
 inline constexpr ParamSpec kLightBleedParam = {
     "light_bleed", "--light-bleed", ParamKind::number, "0.2",
-    "vsm, evsm2, evsm4 (also as cascades' moments): light-bleeding reduction, the Chebyshev bound p remapped by linstep(amount, 1, p)", 0,
+    "vsm, evsm2, evsm4 (also as cascades' and cube's moments): light-bleeding reduction, the Chebyshev bound p remapped by linstep(amount, 1, p)", 0,
     0.99};
 inline constexpr ParamSpec kMinVarianceParam = {
     "min_variance", "--min-variance", ParamKind::number, "0.00002",
-    "vsm (also as cascades' moments): smallest variance in the Chebyshev bound (in depth units squared)", 0, 0.01};
+    "vsm (also as cascades' and cube's moments): smallest variance in the Chebyshev bound (in depth units squared)", 0, 0.01};
 inline constexpr ParamSpec kEsmCParam = {
-    "esm_c", "--esm-c", ParamKind::number, "80", "esm (also as cascades' moments): the exponent c of exp(c z); larger is sharper, less leaking",
+    "esm_c", "--esm-c", ParamKind::number, "80", "esm (also as cascades' and cube's moments): the exponent c of exp(c z); larger is sharper, less leaking",
     1, 88.72, {}, "exp(c z) overflows 32-bit float storage for c above ln(FLT_MAX) = 88.72"};
 inline constexpr ParamSpec kEvsmPositiveParam = {
-    "evsm_positive", "--evsm-positive", ParamKind::number, "40", "evsm2, evsm4 (also as cascades' moments): exponent of the positive warp",
+    "evsm_positive", "--evsm-positive", ParamKind::number, "40", "evsm2, evsm4 (also as cascades' and cube's moments): exponent of the positive warp",
     0.1, 44.36, {}, "the second moment exp(2 c) overflows 32-bit float storage for c above 44.36"};
 inline constexpr ParamSpec kEvsmNegativeParam = {
-    "evsm_negative", "--evsm-negative", ParamKind::number, "5", "evsm4 (also as cascades' moments): exponent of the negative warp", 0.1, 44.36,
+    "evsm_negative", "--evsm-negative", ParamKind::number, "5", "evsm4 (also as cascades' and cube's moments): exponent of the negative warp", 0.1, 44.36,
     {}, "the second moment exp(2 c) overflows 32-bit float storage for c above 44.36"};
 inline constexpr ParamSpec kEvsmMinVarianceParam = {
     "evsm_min_variance", "--evsm-min-variance", ParamKind::number, "0.0000001",
-    "evsm2, evsm4 (also as cascades' moments): smallest variance in depth units squared, scaled by each warp's slope squared", 0, 0.01};
+    "evsm2, evsm4 (also as cascades' and cube's moments): smallest variance in depth units squared, scaled by each warp's slope squared", 0, 0.01};
 inline constexpr ParamSpec kEsmParams[] = {kEsmCParam, kBlurParam};
 inline constexpr ParamSpec kVsmParams[] = {kBlurParam, kLightBleedParam, kMinVarianceParam};
 inline constexpr ParamSpec kEvsmParams[] = {
     kEvsmPositiveParam, kEvsmNegativeParam, kEvsmMinVarianceParam, kBlurParam, kLightBleedParam,
+};
+inline constexpr ParamSpec kMomentsParam = {
+    "moments", "--moments", ParamKind::choice, "none",
+    "cascades, cube: each slice's or face's map compared with the filter (none), or turned into blurred "
+    "filterable moments as the esm, vsm, evsm2 and evsm4 techniques, with their parameters", 0, 0,
+    {"none", "esm", "vsm", "evsm2", "evsm4"}};
+// The cube's moments are blurred face by face (docs/filtered-shadows.md).
+inline constexpr ParamSpec kCubeParams[] = {
+    {"seamless", "--seamless", ParamKind::flag, "true",
+     "cube: filter across face edges (GL_TEXTURE_CUBE_MAP_SEAMLESS; with moments, the bilinear lookup)"},
+    kMomentsParam,
+    kEsmCParam,
+    kBlurParam,
+    kLightBleedParam,
+    kMinVarianceParam,
+    kEvsmPositiveParam,
+    kEvsmNegativeParam,
+    kEvsmMinVarianceParam,
 };
 inline constexpr ParamSpec kCascadeParams[] = {
     {"cascades", "--cascades", ParamKind::integer, "4", "cascades: number of slices of the view frustum", 1, 4},
@@ -216,10 +231,7 @@ inline constexpr ParamSpec kCascadeParams[] = {
      "cascades: fraction of a slice, at its far end, blended into the next slice's map", 0, 0.5},
     {"cascade_warp", "--cascade-warp", ParamKind::choice, "none",
      "cascades: each slice's map orthographic, or warped by LiSPSM", 0, 0, {"none", "lispsm"}},
-    {"moments", "--moments", ParamKind::choice, "none",
-     "cascades: each slice's map compared with the filter (none), or turned into blurred filterable moments as "
-     "the esm, vsm, evsm2 and evsm4 techniques, with their parameters", 0, 0,
-     {"none", "esm", "vsm", "evsm2", "evsm4"}},
+    kMomentsParam,
     kMapLayoutParam,
     kViewRangeParam,
     kEsmCParam,
