@@ -14,6 +14,7 @@
 #include "raster/srgb8.h"
 #include "scenes/frame/develop.h"
 #include "scenes/frame/frame.h"
+#include "tests/scenes/frame/floor_scene.h"
 #include "tests/support.h"
 
 namespace {
@@ -28,24 +29,7 @@ raster::ColorTarget uniform(int w, int h, glm::vec4 c) {
 // over its centre: illuminance (direct, plus the light's ambient of ½ · 4π · 1000 / 3200 ≈ 2 lux) falls smoothly
 // from 6.4 lux at the centre to 2.4 at the corners. No shadows, no specular.
 scenes::Scene gradient_scene() {
-  scenes::Scene s;
-  scenes::Mesh m;
-  m.positions = {{-20, 0, -20}, {20, 0, -20}, {20, 0, 20}, {-20, 0, 20}};
-  m.normals.assign(4, glm::vec3(0, 1, 0));
-  m.indices = {0, 2, 1, 0, 3, 2};
-  s.meshes.push_back(m);
-  scenes::Material mat;
-  mat.base_color = glm::vec4(0.8f, 0.7f, 0.6f, 1.0f);
-  mat.specular_strength = 0.0f;
-  s.materials.push_back(mat);
-  s.instances.push_back(scenes::Instance{});
-  s.objects.push_back("floor");
-  scenes::Camera cam;
-  cam.position = {0, 50, 0};
-  cam.target = {0, 0, 0};
-  cam.up = {0, 0, -1};
-  cam.projection = scenes::Orthographic{-16.0f, 16.0f, -9.0f, 9.0f, 1.0f, 100.0f};
-  s.cameras.push_back(cam);
+  scenes::Scene s = testsupport::floor_seen_from_above({0.8f, 0.7f, 0.6f});
   scenes::Light lamp;
   lamp.type = scenes::LightType::point;
   lamp.position = {0, 15, 0};

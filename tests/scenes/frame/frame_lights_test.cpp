@@ -8,6 +8,7 @@
 #include "scenes/frame/frame.h"
 #include "scenes/frame/frame_lights.h"
 #include "scenes/builtin_scenes.h"
+#include "tests/scenes/frame/floor_scene.h"
 #include "tests/support.h"
 
 namespace {
@@ -179,24 +180,7 @@ TEST(FrameLights, AmbientIsHalfTheFluxOverTheBoundsSurface) {
 // In a frame the ambient is the same everywhere: a floor under a spot that points away from it (no direct light
 // on it) shows albedo / π · E_a at every pixel, near the lamp and far from it alike.
 TEST(FrameLights, AmbientOfASpotIsUniformOverTheFloor) {
-  scenes::Scene s;
-  scenes::Mesh m;
-  m.positions = {{-20, 0, -20}, {20, 0, -20}, {20, 0, 20}, {-20, 0, 20}};
-  m.normals.assign(4, glm::vec3(0, 1, 0));
-  m.indices = {0, 2, 1, 0, 3, 2};
-  s.meshes.push_back(m);
-  scenes::Material mat;
-  mat.base_color = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-  mat.specular_strength = 0.0f;
-  s.materials.push_back(mat);
-  s.instances.push_back(scenes::Instance{});
-  s.objects.push_back("floor");
-  scenes::Camera cam;
-  cam.position = {0, 50, 0};
-  cam.target = {0, 0, 0};
-  cam.up = {0, 0, -1};
-  cam.projection = scenes::Orthographic{-16.0f, 16.0f, -9.0f, 9.0f, 1.0f, 100.0f};
-  s.cameras.push_back(cam);
+  scenes::Scene s = testsupport::floor_seen_from_above({0.5f, 0.5f, 0.5f});
   scenes::Light spot;
   spot.type = scenes::LightType::spot;
   spot.position = {-15, 1, -5};
