@@ -160,7 +160,7 @@ ColorTarget::ColorTarget(int width, int height, ColorFormat format, bool srgb)
 void ColorTarget::clear(const glm::vec4& c) {
   // One texel as write() stores it, then copied over the whole padded storage (a frame's radiance is 15 MB).
   write(0, 0, c);
-  const size_t texel = format_ == ColorFormat::rgba8 ? 4 : 16, texels = size_t(pitch_) * size_t(padded_height_);
+  const size_t texel = bytes_per_texel(format_), texels = size_t(pitch_) * size_t(padded_height_);
   std::byte* p = storage_.data();
   if (std::all_of(p, p + texel, [](std::byte b) { return b == std::byte{0}; })) {
     std::memset(p, 0, texel * texels);

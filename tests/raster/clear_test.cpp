@@ -102,3 +102,22 @@ TEST(Clear, ChunkSplitChangesNoBit) {
     EXPECT_EQ(h, first) << "threads " << threads;
   }
 }
+
+// ColorTarget::clear stores one texel as write() does and copies it over the whole padded storage, for every
+// format (RGBA8, and float targets of four, two and one channels): every texel reads back the cleared value.
+// A 512² target is large enough to be mapped on its own, so copying by the wrong texel size would run past it.
+TEST(Clear, ColorTargetsOfEveryFormatHoldTheClearedValueEverywhere) {
+  for (ColorFormat f : {ColorFormat::rgba8, ColorFormat::rgba32f, ColorFormat::rg32f, ColorFormat::r32f}) {
+    for (const glm::vec4 c : {glm::vec4(0.0f), glm::vec4(0.25f, 0.5f, 0.75f, 1.0f)}) {
+      ColorTarget one(1, 1, f);
+      one.write(0, 0, c);
+      const glm::vec4 expected = one.read(0, 0);
+      ColorTarget t(509, 511, f);
+      t.clear(c);
+      size_t wrong = 0;
+      for (int y = 0; y < t.padded_height(); ++y)
+        for (int x = 0; x < t.pitch(); ++x) wrong += t.read(x, y) != expected;
+      EXPECT_EQ(wrong, 0u) << "format " << int(f) << ", clear " << c.r;
+    }
+  }
+}
