@@ -26,9 +26,16 @@ namespace {
 
 std::string indexed(const char* array, size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
 
-// tinygltf's image hook: images are never decoded, only their URI is kept.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-                void*) {
+// The encoded bytes of the images given as data: URIs, by image index (tinygltf decodes the base64 and hands them
+// to the image hook; the buffer-view images are read from their views, bounds-checked, by the importer).
+using DataUriImages = std::map<int, std::vector<unsigned char>>;
+
+// tinygltf's image hook: images are never decoded here (scenes/io does that with the other textures); a data:
+// URI's bytes are kept, since tinygltf drops them after the call.
+bool keep_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                const unsigned char* bytes, int size, void* user) {
+  if (image->bufferView < 0 && bytes && size > 0)
+    (*static_cast<DataUriImages*>(user))[index].assign(bytes, bytes + size);
   return true;
 }
 
@@ -42,7 +49,8 @@ std::string clean_message(std::string s) {
   return s;
 }
 
-tinygltf::Model load_model(const std::filesystem::path& path, const std::string& file, Scene& out) {
+tinygltf::Model load_model(const std::filesystem::path& path, const std::string& file, Scene& out,
+                           DataUriImages& data_uri_images) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw SceneError(file, "", "cannot open file (" + std::string(std::strerror(errno)) + ")");
   const std::streamoff size = in.tellg();
@@ -54,7 +62,7 @@ tinygltf::Model load_model(const std::filesystem::path& path, const std::string&
   if (!in.read(reinterpret_cast<char*>(bytes.get()), size)) throw SceneError(file, "", "cannot read file");
 
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&skip_image, nullptr);
+  loader.SetImageLoader(&keep_image, &data_uri_images);
   tinygltf::Model model;
   std::string err, warn;
   const std::string dir = path.parent_path().empty() ? std::string(".") : path.parent_path().string();
@@ -89,9 +97,10 @@ glm::dmat4 node_matrix(const tinygltf::Node& n) {
 
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, std::string file, std::filesystem::path dir, Scene& out)
-      : model_(model), file_(std::move(file)), dir_(std::move(dir)), out_(out), read_(model, file_),
-        materials_(model.materials.size(), -1) {}
+  Importer(const tinygltf::Model& model, DataUriImages data_uri_images, std::string file,
+           std::filesystem::path dir, Scene& out)
+      : model_(model), data_uri_images_(std::move(data_uri_images)), file_(std::move(file)), dir_(std::move(dir)),
+        out_(out), read_(model, file_), materials_(model.materials.size(), -1) {}
 
   void run() {
     // Compressed geometry would read as accessors without data: refuse it instead of importing zeros.
@@ -268,7 +277,7 @@ class Importer {
     m.shininess = roughness > 0.0f ? std::clamp(2.0f / std::pow(roughness, 4.0f) - 2.0f, 1.0f, 512.0f) : 512.0f;
     m.double_sided = src.doubleSided;
     const std::string tex_key = key + ".pbrMetallicRoughness.baseColorTexture";
-    m.texture = texture_path(pbr.baseColorTexture.index, tex_key);
+    texture_source(pbr.baseColorTexture.index, tex_key, m);
     if (!m.texture.empty()) {
       m.texture_transform = texture_transform(pbr.baseColorTexture, tex_key);
       const int sampler = model_.textures[size_t(pbr.baseColorTexture.index)].sampler;
@@ -348,19 +357,56 @@ class Importer {
     }
   }
 
-  std::string texture_path(int texture, const std::string& key) {
-    if (texture < 0) return {};
+  // Sets the material's texture from glTF texture `texture`: a path for an image in a file of its own, or the
+  // encoded bytes of one the file embeds (buffer view or data: URI), read once per image.
+  void texture_source(int texture, const std::string& key, Material& m) {
+    if (texture < 0) return;
     if (size_t(texture) >= model_.textures.size()) fail(key, "texture " + std::to_string(texture) + " does not exist");
     const int source = model_.textures[size_t(texture)].source;
-    if (source < 0) return {};
+    if (source < 0) return;
     if (size_t(source) >= model_.images.size())
       fail(indexed("textures", size_t(texture)), "image " + std::to_string(source) + " does not exist");
     const tinygltf::Image& image = model_.images[size_t(source)];
-    if (image.uri.empty() || image.uri.rfind("data:", 0) == 0) {
-      out_.warnings.push_back(file_ + ": " + indexed("images", size_t(source)) + ": embedded image not kept");
-      return {};
+    const std::string where = indexed("images", size_t(source));
+    if (image.bufferView < 0 && !image.uri.empty()) {
+      m.texture = (dir_ / uri_decode(image.uri)).lexically_normal().generic_string();
+      return;
     }
-    return (dir_ / uri_decode(image.uri)).lexically_normal().generic_string();
+    auto [it, fresh] = embedded_.try_emplace(source);
+    if (fresh) {
+      auto e = std::make_shared<EmbeddedImage>();
+      e->file = file_;
+      e->where = where;
+      e->bytes = image.bufferView >= 0 ? view_bytes(image.bufferView, where) : data_uri_bytes(source, where);
+      it->second = std::move(e);
+    }
+    m.texture = file_ + "#" + where;
+    m.embedded_texture.image = it->second;
+  }
+
+  // The bytes of buffer view `view`, checked against its buffer (tinygltf does not check an image's view).
+  std::vector<uint8_t> view_bytes(int view, const std::string& where) const {
+    if (size_t(view) >= model_.bufferViews.size())
+      fail(where + ".bufferView", "buffer view " + std::to_string(view) + " does not exist");
+    const tinygltf::BufferView& v = model_.bufferViews[size_t(view)];
+    const std::string vkey = indexed("bufferViews", size_t(view));
+    if (v.buffer < 0 || size_t(v.buffer) >= model_.buffers.size())
+      fail(vkey + ".buffer", "buffer " + std::to_string(v.buffer) + " does not exist");
+    const std::vector<unsigned char>& data = model_.buffers[size_t(v.buffer)].data;
+    if (v.byteLength == 0) fail(vkey + ".byteLength", "an image's buffer view is empty");
+    if (v.byteOffset > data.size() || v.byteLength > data.size() - v.byteOffset)
+      fail(vkey, "bytes " + std::to_string(v.byteOffset) + ".." + std::to_string(v.byteOffset + v.byteLength) +
+                     " lie past the end of buffer " + std::to_string(v.buffer) + " (" +
+                     std::to_string(data.size()) + " bytes)");
+    const auto first = data.begin() + std::ptrdiff_t(v.byteOffset);
+    return {first, first + std::ptrdiff_t(v.byteLength)};
+  }
+
+  std::vector<uint8_t> data_uri_bytes(int source, const std::string& where) const {
+    const auto it = data_uri_images_.find(source);
+    if (it == data_uri_images_.end() || it->second.empty())
+      fail(where + ".uri", "the image has neither a uri with data nor a buffer view");
+    return {it->second.begin(), it->second.end()};
   }
 
   static std::string uri_decode(const std::string& uri) {
@@ -430,6 +476,7 @@ class Importer {
   }
 
   const tinygltf::Model& model_;
+  DataUriImages data_uri_images_;
   std::string file_;
   std::filesystem::path dir_;
   Scene& out_;
@@ -437,6 +484,7 @@ class Importer {
   std::map<std::pair<size_t, size_t>, std::optional<std::pair<uint32_t, uint32_t>>> primitives_;
   std::vector<int> materials_;
   std::optional<uint32_t> default_material_;
+  std::map<int, std::shared_ptr<const EmbeddedImage>> embedded_;  // by image index
 };
 
 }  // namespace
@@ -444,10 +492,11 @@ class Importer {
 Scene import_gltf(const std::filesystem::path& path, const std::string& label) {
   const std::string file = label.empty() ? path.string() : label;
   Scene out;
-  const tinygltf::Model model = load_model(path, file, out);
+  DataUriImages data_uri_images;
+  const tinygltf::Model model = load_model(path, file, out, data_uri_images);
   out.name = path.stem().string();
   out.objects.push_back(out.name);
-  Importer(model, file, path.parent_path(), out).run();
+  Importer(model, std::move(data_uri_images), file, path.parent_path(), out).run();
   return out;
 }
 

@@ -1,5 +1,5 @@
 // glTF 2.0 import (through tinygltf): the default scene's node hierarchy flattened into meshes and instances,
-// with materials (base colour factor, texture path), cameras and KHR_lights_punctual lights.
+// with materials (base colour factor, texture path or embedded image), cameras and KHR_lights_punctual lights.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -15,7 +15,8 @@ namespace scenes {
 //   indexed or not, each one Mesh shared by every node that instances it;
 // - normals: computed (area-weighted) when missing, non-finite or zero ones replaced (with a warning);
 // - skinned meshes: bind pose, placed by their node's transform like any other mesh (the skin is ignored);
-// - materials: baseColorFactor, the base-colour image's path (relative to the file), doubleSided; specular
+// - materials: baseColorFactor, the base-colour image (its path, relative to the file; or, for an image in a
+//   buffer view or a data: URI, its encoded bytes in Material::embedded_texture), doubleSided; specular
 //   strength 0.3·(1 − roughness), shininess 2/roughness⁴ − 2 clamped to [1, 512];
 // - cameras: position, target (one metre along −Z) and up from the node; a missing zfar becomes 1000·znear;
 // - lights: direction −Z of the node, spot cone half-angles in degrees, default shadow settings per type.

@@ -4,6 +4,7 @@
 // Units are metres; the world is right-handed with +Y up (CONVENTIONS.md).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -41,10 +42,32 @@ enum class TextureWrap : uint8_t { repeat, clamp_to_edge, mirrored_repeat };
 
 // Blinn-Phong style surface description. `texture` is a path (empty: none); the scenes module never opens it
 // (scenes/io/scene_textures.h loads every material's texture once per scene).
+// A texture image that a glTF file carries inside itself (a buffer view of a GLB's binary chunk, or a data:
+// URI), kept encoded as stored (PNG or JPEG) until scenes/io decodes it with the other textures.
+struct EmbeddedImage {
+  std::string file;            // the glTF file holding it, as errors name that file
+  std::string where;           // its place in that file: "images[3]"
+  std::vector<uint8_t> bytes;  // the encoded image
+  bool operator==(const EmbeddedImage&) const = default;
+};
+
+// One embedded image shared by every material (and every copy of a scene) that uses it; equal when the
+// images are, so that scenes compare by content.
+struct EmbeddedImageRef {
+  std::shared_ptr<const EmbeddedImage> image;
+  explicit operator bool() const { return image != nullptr; }
+  bool operator==(const EmbeddedImageRef& o) const {
+    return image == o.image || (image && o.image && *image == *o.image);
+  }
+};
+
 struct Material {
   std::string name = "default";
   glm::vec4 base_color{1.0f};       // linear RGBA factor (multiplies the texture when there is one)
-  std::string texture;              // base-colour texture path, resolved against the file that named it
+  // Base-colour texture: a path, resolved against the file that named it; or, for an image embedded in a glTF
+  // file, "FILE#images[N]", with the image itself in `embedded_texture`.
+  std::string texture;
+  EmbeddedImageRef embedded_texture;
   // Applied to the mesh's texture coordinates (s, t, 1) before the texture is sampled: glTF's
   // KHR_texture_transform, taken into the GL orientation of Mesh::texcoords.
   glm::mat3 texture_transform{1.0f};

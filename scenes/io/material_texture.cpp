@@ -2,6 +2,7 @@
 #include "scenes/io/material_texture.h"
 #include "scenes/io/quiet_stderr.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <unistd.h>
@@ -27,23 +28,23 @@ void expand(const T* p, int n, T one, T out[4]) {
   }
 }
 
-}  // namespace
-
-shading::Texture2D load_texture(const std::filesystem::path& path, const TextureLoadOptions& options) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw IoError(path, "no such file");
-  // Straight alpha, as GL texture data is: by default OpenImageIO would premultiply colour by alpha.
+// Straight alpha, as GL texture data is: by default OpenImageIO would premultiply colour by alpha.
+OIIO::ImageSpec straight_alpha() {
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
-  const QuietStderr quiet;
-  auto in = OIIO::ImageInput::open(path.string(), &config);
-  if (!in) throw IoError(path, "cannot read the image: " + OIIO::geterror());
+  return config;
+}
+
+// Reads an opened image into a texture; errors name `path` and begin with `prefix`.
+shading::Texture2D read_texture(OIIO::ImageInput& image, const std::filesystem::path& path, const std::string& prefix,
+                                const TextureLoadOptions& options) {
+  OIIO::ImageInput* in = &image;
   const OIIO::ImageSpec spec = in->spec();
   const int w = spec.width, h = spec.height, n = std::min(spec.nchannels, 4);
   if (w < 1 || h < 1 || w > shading::kMaxTextureSize || h > shading::kMaxTextureSize)
-    throw IoError(path, "image size " + std::to_string(w) + " x " + std::to_string(h) + " is outside 1.." +
+    throw IoError(path, prefix + "image size " + std::to_string(w) + " x " + std::to_string(h) + " is outside 1.." +
                             std::to_string(shading::kMaxTextureSize));
-  if (n < 1) throw IoError(path, "image has no channels");
+  if (n < 1) throw IoError(path, prefix + "image has no channels");
   const OIIO::TypeDesc fmt = spec.format;
   const bool is8 = fmt.basetype == OIIO::TypeDesc::UINT8 || fmt.basetype == OIIO::TypeDesc::INT8;
   const bool is_half = fmt.basetype == OIIO::TypeDesc::HALF;
@@ -59,7 +60,7 @@ shading::Texture2D load_texture(const std::filesystem::path& path, const Texture
   if (is8) {
     std::vector<uint8_t> px(texels * size_t(n));
     if (!in->read_image(0, 0, 0, n, OIIO::TypeDesc::UINT8, px.data()))
-      throw IoError(path, "cannot read the pixels: " + in->geterror());
+      throw IoError(path, prefix + "cannot read the pixels: " + in->geterror());
     for (int r = 0; r < h; ++r) {
       std::byte* row = tex.mutable_row(0, h - 1 - r);  // file row r is texture row h − 1 − r
       for (int x = 0; x < w; ++x) {
@@ -71,7 +72,7 @@ shading::Texture2D load_texture(const std::filesystem::path& path, const Texture
   } else {
     std::vector<float> px(texels * size_t(n));
     if (!in->read_image(0, 0, 0, n, OIIO::TypeDesc::FLOAT, px.data()))
-      throw IoError(path, "cannot read the pixels: " + in->geterror());
+      throw IoError(path, prefix + "cannot read the pixels: " + in->geterror());
     const bool decode = is_int && options.srgb;
     for (int r = 0; r < h; ++r) {
       for (int x = 0; x < w; ++x) {
@@ -86,6 +87,42 @@ shading::Texture2D load_texture(const std::filesystem::path& path, const Texture
   in->close();
   if (options.mipmaps) tex.generate_mips();
   return tex;
+}
+
+}  // namespace
+
+shading::Texture2D load_texture(const std::filesystem::path& path, const TextureLoadOptions& options) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw IoError(path, "no such file");
+  const OIIO::ImageSpec config = straight_alpha();
+  const QuietStderr quiet;
+  auto in = OIIO::ImageInput::open(path.string(), &config);
+  if (!in) throw IoError(path, "cannot read the image: " + OIIO::geterror());
+  return read_texture(*in, path, "", options);
+}
+
+shading::Texture2D load_texture(std::span<const uint8_t> bytes, const std::filesystem::path& file,
+                                const std::string& where, const TextureLoadOptions& options) {
+  const std::string prefix = where + ": ";
+  static constexpr uint8_t kPng[] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+  static constexpr uint8_t kJpeg[] = {0xff, 0xd8, 0xff};
+  const auto starts = [&](std::span<const uint8_t> magic) {
+    return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin());
+  };
+  const char* format = starts(kPng) ? "png" : starts(kJpeg) ? "jpeg" : nullptr;
+  if (!format) throw IoError(file, prefix + "the embedded image is neither PNG nor JPEG (" +
+                                       std::to_string(bytes.size()) + " bytes)");
+  const OIIO::ImageSpec config = straight_alpha();
+  const QuietStderr quiet;
+  OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+  auto in = OIIO::ImageInput::create(format, false, &config, &memory);
+  OIIO::ImageSpec spec;
+  if (!in || !in->set_ioproxy(&memory) || !in->open(file.string(), spec, config)) {
+    std::string why = in ? in->geterror() : std::string();
+    if (why.empty()) why = OIIO::geterror();
+    throw IoError(file, prefix + "cannot decode the embedded " + format + " image" + (why.empty() ? "" : ": " + why));
+  }
+  return read_texture(*in, file, prefix, options);
 }
 
 }  // namespace scenes::io

@@ -2,7 +2,10 @@
 // flipped into GL order: t = 0 is the bottom row of the picture as a viewer shows it (the file's last row).
 // glTF's v runs from the top, so a glTF loader samples at t = 1 − v.
 #pragma once
+#include <cstdint>
 #include <filesystem>
+#include <span>
+#include <string>
 
 #include "shading/texture.h"
 
@@ -19,5 +22,10 @@ struct TextureLoadOptions {
 // everything else (16-bit integers, floats) rgba32f, sRGB-decoded when integer and srgb. One channel is grey
 // (v, v, v, 1), two grey and alpha, three RGB with alpha 1; channels past four are ignored. Throws IoError.
 shading::Texture2D load_texture(const std::filesystem::path& path, const TextureLoadOptions& options = {});
+
+// The same for an encoded image held in memory (a glTF file's embedded PNG or JPEG, told apart by its first
+// bytes; anything else is refused). Errors are IoError(file, where + ": " + what is wrong).
+shading::Texture2D load_texture(std::span<const uint8_t> bytes, const std::filesystem::path& file,
+                                const std::string& where, const TextureLoadOptions& options = {});
 
 }  // namespace scenes::io

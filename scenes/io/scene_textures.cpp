@@ -20,7 +20,10 @@ SceneTextures load_scene_textures(const Scene& scene) {
     auto it = loaded.find(m.texture);
     if (it == loaded.end()) {
       try {
-        it = loaded.emplace(m.texture, load_texture(m.texture)).first;
+        if (const auto& e = m.embedded_texture.image)
+          it = loaded.emplace(m.texture, load_texture(e->bytes, e->file, e->where)).first;
+        else
+          it = loaded.emplace(m.texture, load_texture(m.texture)).first;
       } catch (const IoError& e) {
         throw IoError(e.file(), "base-colour texture of material '" + m.name + "' (materials[" + std::to_string(i) +
                                     "]): " + e.reason());

@@ -22,14 +22,19 @@ class GltfFixture {
     doc["scene"] = 0;
   }
 
-  // Appends raw data as a buffer view plus an accessor over it; returns the accessor index.
-  int accessor(const void* data, size_t bytes, int component_type, size_t count, const std::string& type) {
+  // Appends raw data as a buffer view (e.g. an embedded image's bytes); returns the view's index.
+  int buffer_view(const void* data, size_t bytes) {
     while (bin.size() % 4) bin.push_back(0);
     const size_t offset = bin.size();
     bin.resize(offset + bytes);
     if (bytes) std::memcpy(bin.data() + offset, data, bytes);
     doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}});
-    doc["accessors"].push_back({{"bufferView", doc["bufferViews"].size() - 1},
+    return int(doc["bufferViews"].size() - 1);
+  }
+
+  // Appends raw data as a buffer view plus an accessor over it; returns the accessor index.
+  int accessor(const void* data, size_t bytes, int component_type, size_t count, const std::string& type) {
+    doc["accessors"].push_back({{"bufferView", buffer_view(data, bytes)},
                                 {"componentType", component_type},
                                 {"count", count},
                                 {"type", type}});
