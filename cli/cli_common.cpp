@@ -102,8 +102,9 @@ scenes::Scene load_any(const std::string& name, const scenes::StageOptions* stag
     }
     return scenes::load_scene(path);
   }
-  if (std::filesystem::exists(path, ec)) throw CliError(name, "not a regular file");
+  // A folder named like a built-in scene (`eval tutorial --out tutorial` makes one) does not hide the scene.
   if (scenes::is_builtin_scene(name)) return scenes::builtin_scene(name);
+  if (std::filesystem::exists(path, ec)) throw CliError(name, "not a regular file");
   if (name.find('/') != std::string::npos || path.has_extension()) throw CliError(name, "no such file");
   return scenes::builtin_scene(name);  // throws `NAME: unknown built-in scene (known: ...)`
 }

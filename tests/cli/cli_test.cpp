@@ -133,6 +133,19 @@ TEST_F(Cli, ListNamesScenesAndTables) {
   EXPECT_EQ(shadowlab(dir, "shadowmap --help").code, 0);
 }
 
+// A built-in scene's name is the scene even where the working folder holds a folder of that name (as `eval
+// tutorial --out tutorial` leaves one); a file of that name is read as the file; any other folder is refused.
+TEST_F(Cli, BuiltinSceneNamesAreNotHiddenByFolders) {
+  fs::create_directory(dir / "tutorial");
+  const Outcome r = shadowlab(dir, "render tutorial --size 32x18 --out t.png");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "t.png"));
+  write(dir / "duel", R"({"objects": [)");
+  expect_bad("render duel --out d.png", "duel", "d.png");
+  fs::create_directory(dir / "nowhere");
+  expect_bad("render nowhere --out n.png", "nowhere", "n.png");
+}
+
 TEST_F(Cli, RenderTutorialWritesFrameAndMaps) {
   const Outcome r = shadowlab(dir, "render tutorial --size 48x32 --shadow-size 64 --threads 2 --out f.png --maps maps --stats");
   ASSERT_EQ(r.code, 0) << r.err;
