@@ -29,7 +29,7 @@ IrregularLight irregular_light(const LightDesc& light);
 
 // How the grid is sized: a top grid over the samples' light-space bounds with a few samples per cell, at most
 // `max_side` cells a side; a top cell holding more than `cell_bound` samples gets its own grid over its samples'
-// bounds, about one sample a cell, at most `max_side` a side. Samples that still crowd one cell (they coincide, or
+// bounds with fewer a cell (irregular_lists.h), at most `max_side` a side. Samples that still crowd one cell (they coincide, or
 // lie closer than that grid resolves) stay in an over-full cell: they are still tested exactly, only slower, and
 // counted in GridStats::overfull_samples.
 struct GridSettings {

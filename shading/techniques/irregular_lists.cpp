@@ -28,6 +28,7 @@ namespace {
 
 constexpr size_t kChunk = 16384;  // samples per pool index
 constexpr size_t kCellChunk = 64;  // split cells per pool index
+constexpr size_t kMaxSplitCells = 16;  // a split cell's grid has at most this many cells per sample
 
 }  // namespace
 
@@ -61,17 +62,32 @@ SampleLists build_sample_lists(std::span<const glm::dvec2> uv, std::span<const d
   }
   cell_of = {};
 
-  // Each split cell's grid over its own samples' bounds (parallel; each writes its own entry).
+  // Each split cell's grid over its own samples' bounds (parallel; each writes its own entry). Where the samples
+  // crowd part of the cell (a few stray ones widen the bounds), the grid's sides double while a cell holds more
+  // than the bound, up to max_side and to kMaxSplitCells cells a sample (coincident samples never part).
   L.subs.resize(to_split.size());
   L.split_cells = to_split.size();
   const size_t split_chunks = (to_split.size() + kCellChunk - 1) / kCellChunk;
   pool.parallel_for(split_chunks, [&](size_t k) {
+    std::vector<uint32_t> count;
     for (size_t j = k * kCellChunk; j < std::min(to_split.size(), (k + 1) * kCellChunk); ++j) {
       const uint32_t c = to_split[j];
+      const uint32_t s0 = top_start[c], m = top_start[c + 1] - s0;
       glm::dvec2 slo(std::numeric_limits<double>::infinity()), shi(-slo);
-      for (uint32_t s = top_start[c]; s < top_start[c + 1]; ++s)
-        slo = glm::min(slo, uv[L.sorted[s]]), shi = glm::max(shi, uv[L.sorted[s]]);
-      L.subs[j] = fit_grid(slo, shi, double(top_start[c + 1] - top_start[c]), max_side);
+      for (uint32_t s = s0; s < s0 + m; ++s) slo = glm::min(slo, uv[L.sorted[s]]), shi = glm::max(shi, uv[L.sorted[s]]);
+      Grid g = fit_grid(slo, shi, double(m) / split_load(cell_bound), max_side);
+      for (;;) {
+        count.assign(g.cells(), 0);
+        uint32_t fullest = 0;
+        for (uint32_t s = s0; s < s0 + m; ++s) fullest = std::max(fullest, ++count[size_t(g.index(uv[L.sorted[s]]))]);
+        const int nx = std::min(2 * g.nx, max_side), ny = std::min(2 * g.ny, max_side);
+        if (fullest <= bound || (nx == g.nx && ny == g.ny) || size_t(nx) * size_t(ny) > kMaxSplitCells * m) break;
+        const glm::dvec2 extent = g.cell * glm::dvec2(g.nx, g.ny);
+        g.nx = nx, g.ny = ny;
+        g.cell = extent / glm::dvec2(nx, ny);
+        g.inv_cell = 1.0 / g.cell;
+      }
+      L.subs[j] = g;
     }
   });
   L.top_leaf.assign(cells + 1, 0);
