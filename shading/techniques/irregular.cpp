@@ -37,12 +37,6 @@ const glm::vec2 kCentre[1] = {{0.0f, 0.0f}};
 // visibility. Unbounded, a 16384 x 16384 frame in one batch needed 24 GB and was killed by the kernel.
 constexpr size_t kSamplesPerBatch = 8;
 
-void add(GridStats& sum, const GridStats& s) {
-  sum.list_ms += s.list_ms, sum.raster_ms += s.raster_ms, sum.test_ms += s.test_ms;
-  sum.samples += s.samples, sum.pairs += s.pairs, sum.tests += s.tests, sum.overfull_samples += s.overfull_samples;
-  sum.max_in_cell = std::max(sum.max_in_cell, s.max_in_cell);
-  sum.cells_x = std::max(sum.cells_x, s.cells_x), sum.cells_y = std::max(sum.cells_y, s.cells_y);
-}
 
 }  // namespace
 
@@ -127,7 +121,7 @@ IrregularBuffer irregular_visibility(const CameraSurface& surface, const LightDe
       reached = {};
       GridStats st;
       const std::vector<uint8_t> shadowed = irregular_shadow(il, origins, casters, settings.grid, pool, st);
-      add(out.stats, st);
+      add_grid_stats(out.stats, st);
       for (size_t i = 0; i < origins.size(); ++i)
         if (!shadowed[i]) ++lit[owner[i]];
     }
@@ -179,6 +173,7 @@ class IrregularShadow final : public LightShadow {
             {"samples", double(g.samples)},
             {"cells_x", double(g.cells_x)},
             {"cells_y", double(g.cells_y)},
+            {"split_cells", double(g.split_cells)},
             {"max_in_cell", double(g.max_in_cell)},
             {"overfull_samples", double(g.overfull_samples)},
             {"pairs", double(g.pairs)},

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "shading/techniques/irregular_lists.h"
 #include "shading/techniques/irregular_ray.h"
 
 namespace shading::tech {
@@ -103,26 +104,14 @@ double light_key(const IrregularLight& l, const glm::dvec3& p) {
 
 double key_slack(double k) { return 1e-9 * (1.0 + std::abs(k)); }
 
-// The grid over the samples' light-space bounds.
-struct Grid {
-  glm::dvec2 lo{0.0}, cell{1.0}, inv_cell{1.0};
-  int nx = 1, ny = 1;
-  size_t cells() const { return size_t(nx) * size_t(ny); }
-  static int clamp_index(double f, int n) {
-    if (!(f >= 0.0)) return 0;  // also NaN
-    return f >= double(n - 1) ? n - 1 : int(f);
-  }
-  int column(double u) const { return clamp_index(std::floor((u - lo.x) * inv_cell.x), nx); }
-  int row(double v) const { return clamp_index(std::floor((v - lo.y) * inv_cell.y), ny); }
-};
-
 // A caster triangle's footprint on the grid: its projection (a spot light's triangle clipped in front of the
 // light first, so up to four corners), counter-clockwise, and the cells its bounding box (grown by `margin`)
 // touches. n = 0: the triangle cannot block any sample.
 struct Footprint {
   std::array<glm::dvec2, 4> p{};
   int n = 0;
-  int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+  int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // the top grid's cells under its box grown by the top margin
+  glm::dvec2 lo{0.0}, hi{0.0};           // its box
   double max_key = 0.0;
 };
 
@@ -164,8 +153,9 @@ Footprint footprint(const IrregularLight& l, const std::array<glm::dvec3, 3>& v,
   if (area < 0.0) std::reverse(f.p.begin(), f.p.begin() + n);
   glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (int i = 0; i < n; ++i) lo = glm::min(lo, f.p[size_t(i)]), hi = glm::max(hi, f.p[size_t(i)]);
+  f.lo = lo, f.hi = hi;
   lo -= margin, hi += margin;
-  const glm::dvec2 g_hi = g.lo + g.cell * glm::dvec2(g.nx, g.ny);
+  const glm::dvec2 g_hi = g.hi();
   if (hi.x < g.lo.x || hi.y < g.lo.y || lo.x > g_hi.x || lo.y > g_hi.y) return f;
   f.n = n;
   f.x0 = g.column(lo.x), f.x1 = g.column(hi.x);
@@ -188,6 +178,14 @@ bool overlaps(const Footprint& f, const Grid& g, int x, int y, double margin) {
 
 }  // namespace
 
+void add_grid_stats(GridStats& sum, const GridStats& s) {
+  sum.list_ms += s.list_ms, sum.raster_ms += s.raster_ms, sum.test_ms += s.test_ms;
+  sum.samples += s.samples, sum.pairs += s.pairs, sum.tests += s.tests;
+  sum.split_cells += s.split_cells, sum.overfull_samples += s.overfull_samples;
+  sum.max_in_cell = std::max(sum.max_in_cell, s.max_in_cell);
+  sum.cells_x = std::max(sum.cells_x, s.cells_x), sum.cells_y = std::max(sum.cells_y, s.cells_y);
+}
+
 std::vector<uint8_t> irregular_shadow(const IrregularLight& light, std::span<const glm::vec3> origins,
                                       const CasterGeometry& casters, const GridSettings& settings,
                                       raster::ThreadPool& pool, GridStats& stats) {
@@ -197,66 +195,45 @@ std::vector<uint8_t> irregular_shadow(const IrregularLight& light, std::span<con
   std::vector<uint8_t> result(n, 0);
   if (n == 0) return result;
 
-  // ---- List building: project, size the grid, sort the samples into per-cell lists in sample order.
+  // ---- List building: project (parallel, with each chunk's bounds), then the two-level lists.
   const auto t_list = Clock::now();
   std::vector<glm::dvec2> uv(n);
   std::vector<double> key(n);
   const size_t sample_chunks = (n + kChunk - 1) / kChunk;
+  struct Bounds {
+    glm::dvec2 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+    double min_key = std::numeric_limits<double>::infinity(), max_key = -std::numeric_limits<double>::infinity();
+  };
+  std::vector<Bounds> chunk_bounds(sample_chunks);
   pool.parallel_for(sample_chunks, [&](size_t c) {
+    Bounds b;
     for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
       const glm::dvec3 o(origins[i]);
       uv[i] = project(light, o);
       key[i] = light_key(light, o);
+      b.lo = glm::min(b.lo, uv[i]), b.hi = glm::max(b.hi, uv[i]);
+      b.min_key = std::min(b.min_key, key[i]), b.max_key = std::max(b.max_key, key[i]);
     }
+    chunk_bounds[c] = b;
   });
-  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  double min_key = std::numeric_limits<double>::infinity(), min_z = min_key;
-  for (size_t i = 0; i < n; ++i) {
-    lo = glm::min(lo, uv[i]), hi = glm::max(hi, uv[i]);
-    min_key = std::min(min_key, key[i]);
+  Bounds all;  // minima and maxima: the same whichever worker ran a chunk
+  for (const Bounds& b : chunk_bounds) {
+    all.lo = glm::min(all.lo, b.lo), all.hi = glm::max(all.hi, b.hi);
+    all.min_key = std::min(all.min_key, b.min_key), all.max_key = std::max(all.max_key, b.max_key);
   }
-  if (light.spot) min_z = -*std::max_element(key.begin(), key.end());  // the nearest sample's depth
-  Grid g;
-  g.lo = lo;
-  const double big = std::max({hi.x - lo.x, hi.y - lo.y, 1e-12 * (1.0 + glm::length(lo))});
-  const glm::dvec2 extent(std::max(hi.x - lo.x, big * 1e-6), std::max(hi.y - lo.y, big * 1e-6));
-  const double side = std::sqrt(extent.x * extent.y / double(n));  // about one sample per cell
-  const int max_side = std::max(1, settings.max_side);
-  g.nx = int(std::clamp(std::ceil(extent.x / side), 1.0, double(max_side)));
-  g.ny = int(std::clamp(std::ceil(extent.y / side), 1.0, double(max_side)));
-  std::vector<uint32_t> cell_of(n), start;
-  for (;;) {
-    g.cell = extent / glm::dvec2(g.nx, g.ny);
-    g.inv_cell = 1.0 / g.cell;
-    pool.parallel_for(sample_chunks, [&](size_t c) {
-      for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
-        cell_of[i] = uint32_t(size_t(g.row(uv[i].y)) * size_t(g.nx) + size_t(g.column(uv[i].x)));
-    });
-    start.assign(g.cells() + 1, 0);
-    for (size_t i = 0; i < n; ++i) ++start[cell_of[i] + 1];
-    size_t fullest = 0;
-    for (size_t c = 0; c < g.cells(); ++c) fullest = std::max<size_t>(fullest, start[c + 1]);
-    stats.max_in_cell = fullest;
-    const bool refinable = g.nx < max_side || g.ny < max_side;
-    if (fullest <= size_t(settings.cell_bound) || !refinable) break;
-    g.nx = std::min(2 * g.nx, max_side), g.ny = std::min(2 * g.ny, max_side);
-  }
-  for (size_t c = 0; c < g.cells(); ++c) {
-    if (start[c + 1] > uint32_t(settings.cell_bound)) stats.overfull_samples += start[c + 1];
-    start[c + 1] += start[c];
-  }
-  std::vector<uint32_t> sorted(n);
-  std::vector<double> cell_min_key(g.cells(), std::numeric_limits<double>::infinity());
-  {
-    std::vector<uint32_t> cursor(start.begin(), start.end() - 1);
-    for (size_t i = 0; i < n; ++i) {
-      sorted[cursor[cell_of[i]]++] = uint32_t(i);
-      cell_min_key[cell_of[i]] = std::min(cell_min_key[cell_of[i]], key[i]);
-    }
-  }
+  const glm::dvec2 lo = all.lo, hi = all.hi;
+  const double min_key = all.min_key;
+  const double min_z = light.spot ? -all.max_key : 0.0;  // spot: the nearest sample's depth
+  const SampleLists lists =
+      build_sample_lists(uv, key, lo, hi, settings.cell_bound, std::max(1, settings.max_side), pool);
+  const Grid& g = lists.top;
   std::vector<glm::vec3> sorted_origin(n);
-  for (size_t s = 0; s < n; ++s) sorted_origin[s] = origins[sorted[s]];
+  pool.parallel_for(sample_chunks, [&](size_t c) {
+    for (size_t s = c * kChunk; s < std::min(n, (c + 1) * kChunk); ++s) sorted_origin[s] = origins[lists.sorted[s]];
+  });
   stats.cells_x = size_t(g.nx), stats.cells_y = size_t(g.ny);
+  stats.max_in_cell = lists.max_in_leaf, stats.overfull_samples = lists.overfull_samples;
+  stats.split_cells = lists.split_cells;
   const auto t_raster = Clock::now();
   stats.list_ms = ms_between(t_list, t_raster);
 
@@ -265,7 +242,9 @@ std::vector<uint8_t> irregular_shadow(const IrregularLight& light, std::span<con
   // ray's hit (level 0, as the reference's occlusion filter reads them).
   const CasterTriangles tris(casters);
   const size_t ntri = tris.size();
-  const double margin = 1e-3 * std::min(g.cell.x, g.cell.y) + 1e-12 * (1.0 + glm::length(lo) + glm::length(hi));
+  // Cells are grown by 10⁻³ of a cell, plus 10⁻¹² of the view's scale for the rounding of the projections.
+  const double slack = 1e-12 * (1.0 + glm::length(lo) + glm::length(hi));
+  const double margin = 1e-3 * std::min(g.cell.x, g.cell.y) + slack;
   const double z_min = 0.5e-5 * min_z;  // the reference's rays stop 10⁻⁵ of their length short of the light
   std::vector<Footprint> feet(ntri);
   pool.parallel_for((ntri + kChunk - 1) / kChunk, [&](size_t c) {
@@ -297,24 +276,42 @@ std::vector<uint8_t> irregular_shadow(const IrregularLight& light, std::span<con
   pool.parallel_for(nbands, [&](size_t b) {
     const auto t0 = Clock::now();
     const int row_lo = int(b) * kBandRows, row_hi = std::min(g.ny - 1, row_lo + kBandRows - 1);
-    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (triangle, cell)
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (triangle, leaf)
+    auto reaches = [](const Footprint& f, double cell_min_key) {  // some of the triangle is nearer the light
+      return f.max_key >= cell_min_key - key_slack(cell_min_key);
+    };
     for (uint32_t k = band_start[b]; k < band_start[b + 1]; ++k) {
       const uint32_t t = band_tris[k];
       const Footprint& f = feet[t];
       for (int y = std::max(f.y0, row_lo); y <= std::min(f.y1, row_hi); ++y)
         for (int x = f.x0; x <= f.x1; ++x) {
-          const uint32_t c = uint32_t(size_t(y) * size_t(g.nx) + size_t(x));
-          if (start[c] == start[c + 1]) continue;
-          if (f.max_key < cell_min_key[c] - key_slack(cell_min_key[c])) continue;
-          if (overlaps(f, g, x, y, margin)) pairs.emplace_back(t, c);
+          const size_t c = size_t(y) * size_t(g.nx) + size_t(x);
+          if (lists.top_leaf[c] == lists.top_leaf[c + 1] || !reaches(f, lists.top_min_key[c])) continue;
+          if (!overlaps(f, g, x, y, margin)) continue;
+          if (lists.split[c] < 0) {
+            pairs.emplace_back(t, lists.top_leaf[c]);
+            continue;
+          }
+          // A split cell: the same over its own grid's cells under the footprint's box.
+          const Grid& sg = lists.subs[size_t(lists.split[c])];
+          const double sm = 1e-3 * std::min(sg.cell.x, sg.cell.y) + slack;
+          const glm::dvec2 flo = f.lo - sm, fhi = f.hi + sm, shi = sg.hi();
+          if (fhi.x < sg.lo.x || fhi.y < sg.lo.y || flo.x > shi.x || flo.y > shi.y) continue;
+          for (int sy = sg.row(flo.y); sy <= sg.row(fhi.y); ++sy)
+            for (int sx = sg.column(flo.x); sx <= sg.column(fhi.x); ++sx) {
+              const uint32_t leaf = lists.top_leaf[c] + uint32_t(sy * sg.nx + sx);
+              if (lists.leaf_start[leaf] == lists.leaf_start[leaf + 1]) continue;
+              if (!reaches(f, lists.leaf_min_key[leaf]) || !overlaps(f, sg, sx, sy, sm)) continue;
+              pairs.emplace_back(t, leaf);
+            }
         }
     }
     const auto t1 = Clock::now();
     size_t tests = 0;
-    for (const auto& [t, c] : pairs) {
+    for (const auto& [t, leaf] : pairs) {
       const std::array<glm::dvec3, 3> v = tris.corners(t);
       const glm::dvec3 &a = v[0], &bv = v[1], &cv = v[2];
-      for (uint32_t s = start[c]; s < start[c + 1]; ++s) {
+      for (uint32_t s = lists.leaf_start[leaf]; s < lists.leaf_start[leaf + 1]; ++s) {
         if (shadowed[s]) continue;
         ShadowRay r;
         r.origin = glm::dvec3(sorted_origin[s]);
@@ -337,7 +334,7 @@ std::vector<uint8_t> irregular_shadow(const IrregularLight& light, std::span<con
     stats.raster_ms += c.raster_ms, stats.test_ms += c.test_ms;
     stats.pairs += c.pairs, stats.tests += c.tests;
   }
-  for (size_t s = 0; s < n; ++s) result[sorted[s]] = shadowed[s];
+  for (size_t s = 0; s < n; ++s) result[lists.sorted[s]] = shadowed[s];
   return result;
 }
 

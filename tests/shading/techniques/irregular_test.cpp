@@ -114,8 +114,9 @@ TEST(IrregularGrid, OneTriangleOverAPlaneUnderASpotAgreesExactly) {
   EXPECT_FALSE(shadowed[samples.size() - 1]);
 }
 
-// Random triangles over random samples: the grid (conservative rasterization, per-cell lists, the key cull) must
-// give exactly what testing every triangle against every sample gives, with a cell bound of 1 and a cap of 8
+// Random triangles over random samples and a dense patch of them: the grid (conservative rasterization over both
+// levels of cells, per-cell lists, the key cull) must give exactly what testing every triangle against every
+// sample gives, with the default cell bound (the patch's top cells split) and with a bound of 1 and a cap of 8
 // cells a side so that over-full cells take the fallback, at any thread count.
 TEST(IrregularGrid, AgreesWithEveryTriangleAgainstEverySampleAtAnyThreadCount) {
   std::mt19937 rng(21);
@@ -131,6 +132,9 @@ TEST(IrregularGrid, AgreesWithEveryTriangleAgainstEverySampleAtAnyThreadCount) {
   }
   std::vector<glm::vec3> samples;
   for (int i = 0; i < 4000; ++i) samples.emplace_back(1.5f * u(rng), 0.5f * h(rng) - 0.1f, 1.5f * u(rng));
+  // And a dense patch 5 cm wide, as a grazing floor crowds the light's view: its top cells split.
+  for (int i = 0; i < 3000; ++i)
+    samples.emplace_back(0.2f + 0.0125f * u(rng), 0.5f * h(rng) - 0.1f, -0.3f + 0.0125f * u(rng));
   const tech::CasterGeometry casters{positions, indices};
   for (const tech::LightDesc& light : {sun_straight_down(), [] {
          tech::LightDesc l;
@@ -164,6 +168,7 @@ TEST(IrregularGrid, AgreesWithEveryTriangleAgainstEverySampleAtAnyThreadCount) {
           EXPECT_EQ(stats.cells_x, 8u);
           EXPECT_GT(stats.overfull_samples, 0u);  // the fallback ran: over-full cells, tested all the same
         } else {
+          EXPECT_GT(stats.split_cells, 0u);  // the patch's cells have grids of their own
           EXPECT_LE(stats.max_in_cell, size_t(settings.cell_bound));
         }
       }
