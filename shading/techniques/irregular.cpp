@@ -11,6 +11,8 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "shading/techniques/irregular_cube.h"
+
 namespace shading::tech {
 
 namespace {
@@ -63,13 +65,13 @@ glm::vec3 footprint_point(const glm::dmat4& inv_view_proj, glm::vec2 size, glm::
 
 bool shadow_origin(const LightDesc& light, glm::vec3 p, glm::vec3 n, float epsilon, glm::vec3& origin) {
   glm::vec3 dir = -light.direction;
-  if (light.type == LightType::spot) {
+  if (light.type != LightType::directional) {  // spot or point: the range, and a spot's cone
     const glm::vec3 d = light.position - p;
     const float dist = glm::length(d);
     if (!(dist > 0.0f)) return false;
     if (light.range > 0.0f && dist >= light.range) return false;
     dir = d / dist;
-    if (glm::dot(-dir, light.direction) < std::cos(light.outer_angle)) return false;
+    if (light.type == LightType::spot && glm::dot(-dir, light.direction) < std::cos(light.outer_angle)) return false;
   }
   if (!(glm::dot(n, dir) > 0.0f)) return false;  // the surface faces away: it shadows itself
   origin = p + epsilon * n;
@@ -120,7 +122,10 @@ IrregularBuffer irregular_visibility(const CameraSurface& surface, const LightDe
       dense = {};
       reached = {};
       GridStats st;
-      const std::vector<uint8_t> shadowed = irregular_shadow(il, origins, casters, settings.grid, pool, st);
+      const std::vector<uint8_t> shadowed =
+          light.type == LightType::point
+              ? irregular_cube_shadow(light.position, origins, casters, settings.grid, pool, st)
+              : irregular_shadow(il, origins, casters, settings.grid, pool, st);
       add_grid_stats(out.stats, st);
       for (size_t i = 0; i < origins.size(); ++i)
         if (!shadowed[i]) ++lit[owner[i]];

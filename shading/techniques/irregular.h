@@ -1,5 +1,6 @@
-// The irregular z-buffer (Johnson, Mark and Burns 2004; Wyman, Hoetzlein and Lefohn 2015–2016) for directional
-// and spot lights: the hard shadow tested exactly at the points the camera shades, with no map and no bias.
+// The irregular z-buffer (Johnson, Mark and Burns 2004; Wyman, Hoetzlein and Lefohn 2015–2016) for directional,
+// spot and point lights (point lights per cube face, irregular_cube.h): the hard shadow tested exactly at the
+// points the camera shades, with no map and no bias.
 // Build: the camera's visible surface (PlanInputs::surface, a camera pre-pass) gives each pixel's point and
 // plane; each pixel gets samples_per_pixel shadow samples on its footprint; the light-space pass
 // (irregular_grid.h) answers every sample; the answers become a per-pixel visibility buffer. Read: the buffer at

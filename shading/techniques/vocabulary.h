@@ -317,7 +317,7 @@ inline constexpr TechniqueInfo kTechniques[] = {
      kPcssParams, false},
     {Technique::irregular, "irregular",
      "irregular z-buffer: every caster tested exactly against the camera's visible samples (no bias, no map)",
-     light_bit(LightType::directional) | light_bit(LightType::spot), true, 4096, DepthFormat::d32f, "", kIrregularParams,
+     light_bit(LightType::directional) | light_bit(LightType::spot) | light_bit(LightType::point), true, 4096, DepthFormat::d32f, "", kIrregularParams,
      false},
 };
 

@@ -23,6 +23,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/pcss_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/tutorial_poisson_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/tutorial_fit_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/irregular_cube_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/irregular_lists_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/irregular_test.cpp
 )
