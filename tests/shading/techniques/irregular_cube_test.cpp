@@ -1,17 +1,13 @@
-// The irregular z-buffer for point lights (shading/techniques/irregular_cube.h), per cube face: one triangle near
-// a point light over a plane, every sample's answer known in closed form, with samples on five faces and on the
-// triangle's edges and corners; the face each sample goes to; a sphere's shadow against the ray-cast reference;
-// the same frame at 0, 1, 2 and 7 threads.
+// The irregular z-buffer for point lights (shading/techniques/irregular_cube.h), per cube face: triangles near a
+// point light over a floor and under a ceiling, every sample's answer known in closed form, with samples on every
+// face and on the triangles' edges and corners; the face each sample goes to. Whole frames (against the ray-cast
+// reference, at any thread count) are irregular_test.cpp's, with a point light among the others.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "scenes/frame/frame.h"
-#include "scenes/reference/frame_reference.h"
 #include "shading/cube_face.h"
 #include "shading/techniques/irregular_cube.h"
-#include "tests/scenes/frame/golden.h"
-#include "tests/scenes/reference/analytic_scenes.h"
 #include "tests/support.h"
 
 namespace {
@@ -85,44 +81,6 @@ TEST(IrregularCube, FacesFollowGlsMajorAxisTable) {
     EXPECT_TRUE(l.spot);
     EXPECT_EQ(l.axis, glm::dvec3(shading::kCubeFaceAxes[f].major));
     EXPECT_EQ(l.position, glm::dvec3(light));
-  }
-}
-
-frame::FrameConfig irregular_view(int samples = 1) {
-  frame::FrameConfig c;
-  c.width = 320, c.height = 240;
-  c.technique = tech::Technique::irregular;
-  c.params["samples_per_pixel"] = double(samples);
-  return c;
-}
-
-// The sphere over the floor under a point light: every lit-facing pixel agrees with the ray-cast reference, the
-// floor's samples spread over five faces.
-TEST(IrregularCubeFrame, AgreesWithTheRayCastReference) {
-  const scenes::Scene scene = testsupport::scene_from_json(testsupport::kSphereUnderPointLight);
-  raster::Renderer renderer(testsupport::test_threads());
-  const reference::FrameReference ref = reference::reference_for(scene, irregular_view(), renderer);
-  const reference::ScoredFrame scored = reference::score_config(scene, irregular_view(), renderer, ref);
-  const reference::LightScore& s = scored.score.lights.at(0);
-  EXPECT_GT(s.scored, 20000u);
-  EXPECT_EQ(s.false_shadowed(), 0u);
-  EXPECT_EQ(s.false_lit(), 0u);
-  const frame::SurfaceRecord& r = *scored.frame.surface;
-  size_t dark = 0;
-  for (size_t p = 0; p < r.pixels(); ++p) dark += r.lit_facing[p] && r.visibility[p] < 0.5f;
-  EXPECT_GT(dark, 300u);  // the sphere's shadow is there
-}
-
-TEST(IrregularCubeFrame, SameFrameAtAnyThreadCount) {
-  const scenes::Scene scene = testsupport::scene_from_json(testsupport::kSphereUnderPointLight);
-  for (int samples : {1, 8}) {
-    uint64_t first = 0;
-    for (int threads : {0, 1, 2, 7}) {
-      raster::Renderer renderer(threads);
-      const uint64_t h = testsupport::frame_hash(frame::render_frame(scene, irregular_view(samples), renderer).color);
-      if (threads == 0) first = h;
-      EXPECT_EQ(h, first) << samples << " samples per pixel, " << threads << " threads";
-    }
   }
 }
 

@@ -238,7 +238,7 @@ TEST(IrregularFrame, AgreesWithTheRayCastReference) {
                 "outer_cone": 40, "range": 20}]
   })";
   raster::Renderer renderer(testsupport::test_threads());
-  for (const char* json : {testsupport::kSquareOverFloor, kSquareUnderSpot}) {
+  for (const char* json : {testsupport::kSquareOverFloor, kSquareUnderSpot, testsupport::kSphereUnderPointLight}) {
     const scenes::Scene scene = testsupport::scene_from_json(json);
     const reference::FrameReference ref = reference::reference_for(scene, irregular_view(), renderer);
     const reference::ScoredFrame scored = reference::score_config(scene, irregular_view(), renderer, ref);
@@ -258,15 +258,18 @@ TEST(IrregularFrame, AgreesWithTheRayCastReference) {
 }
 
 TEST(IrregularFrame, SameFrameAtAnyThreadCount) {
-  const scenes::Scene scene = testsupport::scene_from_json(testsupport::kSquareOverFloor);
-  for (int samples : {1, 8}) {
-    uint64_t first = 0;
-    for (int threads : {0, 1, 2, 7}) {
-      raster::Renderer renderer(threads);
-      const frame::Frame f = frame::render_frame(scene, irregular_view(samples), renderer);
-      const uint64_t h = testsupport::frame_hash(f.color);
-      if (threads == 0) first = h;
-      EXPECT_EQ(h, first) << samples << " samples per pixel, " << threads << " threads";
+  for (const char* json : {testsupport::kSquareOverFloor, testsupport::kSphereUnderPointLight}) {
+    const scenes::Scene scene = testsupport::scene_from_json(json);
+    for (int samples : {1, 8}) {
+      uint64_t first = 0;
+      for (int threads : {0, 1, 2, 7}) {
+        raster::Renderer renderer(threads);
+        const frame::Frame f = frame::render_frame(scene, irregular_view(samples), renderer);
+        const uint64_t h = testsupport::frame_hash(f.color);
+        if (threads == 0) first = h;
+        EXPECT_EQ(h, first) << shading::tech::to_string(scene.lights[0].type) << " light, " << samples
+                            << " samples per pixel, " << threads << " threads";
+      }
     }
   }
 }
