@@ -13,6 +13,7 @@
 
 #include "shading/lookup.h"
 #include "shading/techniques/filtered.h"
+#include "shading/techniques/moment_lod.h"
 #include "shading/techniques/slice_set.h"
 
 namespace shading::tech {
@@ -106,8 +107,8 @@ namespace {
 struct SliceMoments {
   MomentParams params;
   int blur_radius = 2;
-  std::vector<MomentMap> maps;  // one per slice, after build
-  Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
+  std::vector<MomentMap> maps;  // one per slice, after build, with their mip chains
+  Sampler sampler = moment_sampler(MipFilter::linear);  // moment_sampler(params.mips)
 };
 
 class CascadeShadow final : public LightShadow {
@@ -187,12 +188,17 @@ class CascadeShadow final : public LightShadow {
   }
 
   // Slice k's moment map at the point: the depth slice_context gives (bias applied as for the depth maps) against
-  // the filtered moments; lit outside the map, as the depth maps' border.
+  // the filtered moments, read at the level of detail of the point's derivatives in that slice's map (each slice
+  // has its own texel size, so its own level); lit outside the map, as the depth maps' border.
   float moment_slice_visibility(size_t k, const ShadowQuery& q) const {
+    const SliceMap& s = set_.map(k);
     SampleContext ctx;
-    if (!slice_context(set_.map(k), set_.light(), q.p, q.n, q.frag, ctx)) return 1.0f;
+    if (!slice_context(s, set_.light(), q.p, q.n, q.frag, ctx)) return 1.0f;
     if (!(ctx.st.x >= 0.0f && ctx.st.x <= 1.0f && ctx.st.y >= 0.0f && ctx.st.y <= 1.0f)) return 1.0f;
-    const glm::vec4 m = texture(moments_->maps[k].view, moments_->sampler, ctx.st);
+    const glm::vec4 m = read_moments(moments_->maps[k].view, moments_->sampler, ctx.st, q.p, q, [&](glm::vec3 x) {
+      const glm::vec4 c = s.shadow * glm::vec4(x, 1.0f);  // orthographic: moments refuse LiSPSM slices
+      return glm::vec2(c.x, c.y);
+    });
     return moment_visibility(moments_->params, m, std::min(ctx.ref, 1.0f));
   }
 
@@ -226,6 +232,7 @@ std::unique_ptr<LightShadow> plan_cascades(const LightDesc& light, const ShadowC
   if (const std::optional<MomentKind> k = moments_param(c)) {
     moments.emplace();
     moments->params = moment_params(*k, c);
+    moments->sampler = moment_sampler(moments->params.mips);
     moments->blur_radius = int(p.number("blur_radius"));
   }
   CascadePlan plan = plan_cascade_fits(light, s, c.map_size, in);
