@@ -227,6 +227,14 @@ inline constexpr ParamSpec kCubeParams[] = {
     kEvsmNegativeParam,
     kEvsmMinVarianceParam,
 };
+inline constexpr ParamSpec kLightAngleParam = {
+    "light_angle", "--light-angle", ParamKind::number, "1",
+    "pcss, and cascades with soft_shadows = pcss: the directional light's angular diameter in degrees (the sun: 0.53)",
+    0, 30};
+inline constexpr ParamSpec kSoftShadowsParam = {
+    "soft_shadows", "--soft-shadows", ParamKind::choice, "none",
+    "cascades: each slice's map read through the light's filter (none), or with PCSS (pcss): blocker search and "
+    "penumbra in the slice's own texels from light_angle", 0, 0, {"none", "pcss"}};
 inline constexpr ParamSpec kCascadeParams[] = {
     {"cascades", "--cascades", ParamKind::integer, "4", "cascades: number of slices of the view frustum", 1, 4},
     {"split_lambda", "--split-lambda", ParamKind::number, "0.75",
@@ -238,6 +246,8 @@ inline constexpr ParamSpec kCascadeParams[] = {
     {"cascade_warp", "--cascade-warp", ParamKind::choice, "none",
      "cascades: each slice's map orthographic, or warped by LiSPSM", 0, 0, {"none", "lispsm"}},
     kMomentsParam,
+    kSoftShadowsParam,
+    kLightAngleParam,
     kMapLayoutParam,
     kViewRangeParam,
     kEsmCParam,
@@ -250,8 +260,7 @@ inline constexpr ParamSpec kCascadeParams[] = {
     kEvsmMinVarianceParam,
 };
 inline constexpr ParamSpec kPcssParams[] = {
-    {"light_angle", "--light-angle", ParamKind::number, "1",
-     "pcss, directional light: its angular diameter in degrees (the sun: 0.53)", 0, 30},
+    kLightAngleParam,
     {"light_radius", "--light-radius", ParamKind::number, "0.1", "pcss, spot light: its radius in metres", 0, 100},
 };
 
