@@ -1,5 +1,6 @@
 // The box filter of mip generation, separable: per axis, the list of source texels under each destination
-// texel with their covered fractions; a destination texel sums the products of the two lists' weights.
+// texel with their covered fractions; a destination texel sums the products of the two lists' weights. Float
+// formats with even sides take a direct 2 × 2 path with the same sums.
 #include "shading/mip_chain.h"
 
 #include <stdexcept>
@@ -31,12 +32,43 @@ std::vector<std::vector<Tap>> axis_taps(int src, int dst) {
   return taps;
 }
 
+// The common case of a float format with both sides even: each destination texel is the mean of a 2 × 2 block,
+// the same sum in double the general path makes (weights 1/2 × 1/2, the four taps in its order, row by row), so
+// the same bits, without its per-texel format switch and tap lists.
+template <int kFloats>
+void halve_floats(const std::byte* src, size_t src_row_bytes, std::byte* dst, size_t dst_row_bytes, int dw, int dh) {
+  for (int j = 0; j < dh; ++j) {
+    const auto* r0 = reinterpret_cast<const float*>(src + size_t(2 * j) * src_row_bytes);
+    const auto* r1 = reinterpret_cast<const float*>(src + size_t(2 * j + 1) * src_row_bytes);
+    auto* out = reinterpret_cast<float*>(dst + size_t(j) * dst_row_bytes);
+    for (int i = 0; i < dw; ++i) {
+      const size_t a = size_t(2 * i) * kFloats, b = a + kFloats;
+      for (int c = 0; c < kFloats; ++c) {
+        double acc = 0.0;
+        acc += 0.25 * double(r0[a + size_t(c)]);
+        acc += 0.25 * double(r0[b + size_t(c)]);
+        acc += 0.25 * double(r1[a + size_t(c)]);
+        acc += 0.25 * double(r1[b + size_t(c)]);
+        out[size_t(i) * kFloats + size_t(c)] = float(acc);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void box_downsample(TexelFormat format, const std::byte* src, size_t src_row_bytes, int sw, int sh, std::byte* dst,
                     size_t dst_row_bytes, int dw, int dh) {
   if (dw != mip_size(sw, 1) || dh != mip_size(sh, 1))
     throw std::invalid_argument("box_downsample: destination is not the next mip level of the source");
+  if (sw == 2 * dw && sh == 2 * dh) {
+    switch (format) {
+      case TexelFormat::r32f: return halve_floats<1>(src, src_row_bytes, dst, dst_row_bytes, dw, dh);
+      case TexelFormat::rg32f: return halve_floats<2>(src, src_row_bytes, dst, dst_row_bytes, dw, dh);
+      case TexelFormat::rgba32f: return halve_floats<4>(src, src_row_bytes, dst, dst_row_bytes, dw, dh);
+      default: break;
+    }
+  }
   const auto tx = axis_taps(sw, dw), ty = axis_taps(sh, dh);
   for (int j = 0; j < dh; ++j) {
     for (int i = 0; i < dw; ++i) {

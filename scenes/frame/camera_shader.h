@@ -98,7 +98,8 @@ struct BasicCameraShader {
   // neither shaded nor looked up.
   void fragment(const raster::QuadIn<Varyings>& q, raster::QuadOut& out) const {
     Points<4> pts;
-    // The plane's normal from the quad's position differences (helper lanes are interpolated too).
+    // The quad's position differences (helper lanes are interpolated too): the shadow lookups' derivatives and
+    // the recorded plane's normal.
     const glm::vec3 dx = q.in[1].world - q.in[0].world, dy = q.in[2].world - q.in[0].world;
     shading::Quad<glm::vec3> albedo{u.material.albedo, u.material.albedo, u.material.albedo, u.material.albedo};
     unsigned live = q.live;
@@ -113,7 +114,7 @@ struct BasicCameraShader {
     for (int lane = 0; lane < 4; ++lane) {
       if (((live >> lane) & 1u) == 0) continue;  // helper lane (or discarded): never written
       const glm::vec4& fc = q.frag_coord[size_t(lane)];
-      pts.add(*this, q.in[size_t(lane)], q.front_facing, glm::vec2(fc.x, fc.y), lane, albedo[size_t(lane)]);
+      pts.add(*this, q.in[size_t(lane)], q.front_facing, glm::vec2(fc.x, fc.y), lane, albedo[size_t(lane)], dx, dy);
       if (record) pts.surface[pts.n - 1] = {dx, dy, fc.z};
     }
     shade(pts, [](const LightRecord& l, auto q, auto vis) { light_visibility(l, q, vis); });
@@ -136,11 +137,11 @@ struct BasicCameraShader {
     for (int lane = 0; lane < 8; ++lane) {
       if (((q.live >> lane) & 1u) == 0) continue;  // helper lane: never written
       const Varyings v{{in[0][lane], in[1][lane], in[2][lane]}, {in[3][lane], in[4][lane], in[5][lane]}, {}};
-      pts.add(*this, v, q.front_facing, glm::vec2(fx[lane], fy[lane]), lane, u.material.albedo);
-      if (record) {  // the lane's own quad (lanes b, b + 1, b + 4, b + 5), the same differences as fragment()
-        const int b = lane & 2;
-        pts.surface[pts.n - 1] = {world(b + 1) - world(b), world(b + 4) - world(b), fz[lane]};
-      }
+      // The lane's own quad (lanes b, b + 1, b + 4, b + 5): the same differences as fragment().
+      const int b = lane & 2;
+      const glm::vec3 dx = world(b + 1) - world(b), dy = world(b + 4) - world(b);
+      pts.add(*this, v, q.front_facing, glm::vec2(fx[lane], fy[lane]), lane, u.material.albedo, dx, dy);
+      if (record) pts.surface[pts.n - 1] = {dx, dy, fz[lane]};
     }
     shade(pts, [](const LightRecord& l, auto q, auto vis) { light_visibility_x8(l, q, vis); });
     alignas(32) float ch[4][8] = {};
@@ -165,10 +166,10 @@ struct BasicCameraShader {
     std::array<Surface, N> surface;  // filled only when recording
     size_t n = 0;
     void add(const BasicCameraShader& s, const Varyings& in, bool front_facing, glm::vec2 frag, int lane,
-             glm::vec3 surface_albedo) {
+             glm::vec3 surface_albedo, glm::vec3 dpdx, glm::vec3 dpdy) {
       glm::vec3 nrm = glm::normalize(in.normal);
       if (!front_facing) nrm = -nrm;  // double-sided surfaces light their back side
-      q[n] = {in.world, nrm, frag};
+      q[n] = {in.world, nrm, frag, dpdx, dpdy};
       view[n] = glm::normalize(s.u.eye - in.world);
       color[n] = glm::vec3(0.0f);
       albedo[n] = surface_albedo;

@@ -7,12 +7,15 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include "shading/lookup.h"
 #include "shading/techniques/filtered.h"
+#include "shading/techniques/moment_lod.h"
+#include "shading/techniques/pcss.h"
 #include "shading/techniques/slice_set.h"
 
 namespace shading::tech {
@@ -106,16 +109,30 @@ namespace {
 struct SliceMoments {
   MomentParams params;
   int blur_radius = 2;
-  std::vector<MomentMap> maps;  // one per slice, after build
-  Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
+  std::vector<MomentMap> maps;  // one per slice, after build, with their mip chains
+  Sampler sampler = moment_sampler(MipFilter::linear);  // moment_sampler(params.mips)
+};
+
+// PCSS on the slices (`soft_shadows = pcss`): one reader per slice over its own pass (make_pcss_reader), so the
+// light's angular diameter is turned into each slice's map coordinates with that slice's projection and the
+// penumbra in metres does not depend on which slice a point falls in. The slices are orthographic with the
+// classic depth-pass state, and a constant or slope bias in window depth there is the slices' own bias (depth
+// units times the slice's depth extent, as a world distance along the light).
+struct SlicePcss {
+  ClassicLight light;
+  ClassicSettings settings;
+  float angle = 1.0f;  // degrees
+  std::vector<PcssReader> readers;  // one per slice, after build
 };
 
 class CascadeShadow final : public LightShadow {
  public:
   CascadeShadow(Technique t, CascadePlan plan, const CascadeSettings& s, const LightDesc& light,
-                const ShadowConfig& c, const CameraView& camera, std::optional<SliceMoments> moments)
+                const ShadowConfig& c, const CameraView& camera, std::optional<SliceMoments> moments,
+                std::optional<SlicePcss> pcss = std::nullopt)
       : splits_(std::move(plan.splits)), blend_(s.blend), camera_(camera),
-        set_(t, plan.fits, labels(t, plan.fits.size()), light, c, s.atlas), moments_(std::move(moments)) {}
+        set_(t, plan.fits, labels(t, plan.fits.size()), light, c, s.atlas), moments_(std::move(moments)),
+        pcss_(std::move(pcss)) {}
 
   raster::DrawStats build(raster::Renderer& renderer, const CasterGeometry& c) override {
     raster::DrawStats stats = set_.build(renderer, c);
@@ -124,15 +141,20 @@ class CascadeShadow final : public LightShadow {
       for (size_t k = 0; k < set_.size(); ++k)
         stats += filter_pass(renderer, set_.set(), k, moments_->params, moments_->blur_radius, moments_->maps[k]);
     }
+    if (pcss_) {
+      pcss_->readers.clear();
+      for (size_t k = 0; k < set_.size(); ++k)
+        pcss_->readers.push_back(make_pcss_reader(set_.set(), pcss_->light, pcss_->settings, pcss_->angle, k));
+    }
     return stats;
   }
 
   void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const override {
-    if (moments_) {
+    if (moments_ || pcss_) {
       for (size_t i = 0; i < q.size(); ++i) {
         const SliceChoice c = choose_slice(splits_, blend_, view_distance(camera_, q[i].p));
-        float v = moment_slice_visibility(c.slice, q[i]);
-        if (c.next_weight > 0.0f) v += c.next_weight * (moment_slice_visibility(c.slice + 1, q[i]) - v);
+        float v = own_slice_visibility(c.slice, q[i]);
+        if (c.next_weight > 0.0f) v += c.next_weight * (own_slice_visibility(c.slice + 1, q[i]) - v);
         vis[i] = v;
       }
       return;
@@ -150,9 +172,9 @@ class CascadeShadow final : public LightShadow {
   }
 
   // Eight wide: the points of the pair grouped by slice; points in a blend band read their next slice too.
-  // Moment maps are read point by point (one bilinear lookup each).
+  // Moment maps and PCSS are read point by point.
   void visibility_x8(std::span<const ShadowQuery> q, std::span<float> vis) const override {
-    if (moments_) return visibility(q, vis);
+    if (moments_ || pcss_) return visibility(q, vis);
     const SliceLight& l = set_.light();
     std::array<SliceChoice, 8> c;
     bool blends = false;
@@ -186,13 +208,24 @@ class CascadeShadow final : public LightShadow {
     return out;
   }
 
+  // Slice k's own reading where the slices are not read through the light's filter: PCSS or the moments.
+  float own_slice_visibility(size_t k, const ShadowQuery& q) const {
+    if (pcss_) return pcss_visibility(pcss_->readers[k], q.p, q.n, q.frag);
+    return moment_slice_visibility(k, q);
+  }
+
   // Slice k's moment map at the point: the depth slice_context gives (bias applied as for the depth maps) against
-  // the filtered moments; lit outside the map, as the depth maps' border.
+  // the filtered moments, read at the level of detail of the point's derivatives in that slice's map (each slice
+  // has its own texel size, so its own level); lit outside the map, as the depth maps' border.
   float moment_slice_visibility(size_t k, const ShadowQuery& q) const {
+    const SliceMap& s = set_.map(k);
     SampleContext ctx;
-    if (!slice_context(set_.map(k), set_.light(), q.p, q.n, q.frag, ctx)) return 1.0f;
+    if (!slice_context(s, set_.light(), q.p, q.n, q.frag, ctx)) return 1.0f;
     if (!(ctx.st.x >= 0.0f && ctx.st.x <= 1.0f && ctx.st.y >= 0.0f && ctx.st.y <= 1.0f)) return 1.0f;
-    const glm::vec4 m = texture(moments_->maps[k].view, moments_->sampler, ctx.st);
+    const glm::vec4 m = read_moments(moments_->maps[k].view, moments_->sampler, ctx.st, q.p, q, [&](glm::vec3 x) {
+      const glm::vec4 c = s.shadow * glm::vec4(x, 1.0f);  // orthographic: moments refuse LiSPSM slices
+      return glm::vec2(c.x, c.y);
+    });
     return moment_visibility(moments_->params, m, std::min(ctx.ref, 1.0f));
   }
 
@@ -201,6 +234,7 @@ class CascadeShadow final : public LightShadow {
   CameraView camera_;
   SliceSet set_;
   std::optional<SliceMoments> moments_;
+  std::optional<SlicePcss> pcss_;
 };
 
 }  // namespace
@@ -226,11 +260,29 @@ std::unique_ptr<LightShadow> plan_cascades(const LightDesc& light, const ShadowC
   if (const std::optional<MomentKind> k = moments_param(c)) {
     moments.emplace();
     moments->params = moment_params(*k, c);
+    moments->sampler = moment_sampler(moments->params.mips);
     moments->blur_radius = int(p.number("blur_radius"));
+  }
+  std::optional<SlicePcss> pcss;
+  if (p.text("soft_shadows") == "pcss") {
+    if (moments)
+      throw TechniqueError(p.where("soft_shadows") + ": pcss and moments = " + p.text("moments") +
+                           " both replace the filter; choose one");
+    if (s.lispsm)
+      throw TechniqueError(p.where("soft_shadows") + ": pcss needs orthographic slices; a LiSPSM warp "
+                           "(cascade_warp = lispsm) has no single texel size or depth scale per slice");
+    if (c.filter != FilterKind::pcf || c.filter_params.pcf_taps)
+      throw TechniqueError(c.where.substr(0, c.where.size() - std::string_view("params.").size()) + "filter: " +
+                           std::string(to_string(c.filter)) +
+                           " is not used with soft_shadows = pcss (PCSS filters with its own kernel)");
+    pcss.emplace();
+    pcss->light = classic_light(light);
+    pcss->settings = classic_settings(c);
+    pcss->angle = float(p.number("light_angle"));
   }
   CascadePlan plan = plan_cascade_fits(light, s, c.map_size, in);
   return std::make_unique<CascadeShadow>(Technique::cascades, std::move(plan), s, light, c, in.camera,
-                                         std::move(moments));
+                                         std::move(moments), std::move(pcss));
 }
 
 std::unique_ptr<LightShadow> plan_lispsm(const LightDesc& light, const ShadowConfig& c, const PlanInputs& in) {

@@ -29,8 +29,9 @@ DepthPassOptions classic_depth_options(const ClassicSettings& s) {
   return o;
 }
 
-ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& light, const ClassicSettings& s) {
-  const ShadowPass& p = set.passes.at(0);
+ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& light, const ClassicSettings& s,
+                                  size_t pass) {
+  const ShadowPass& p = set.passes.at(pass);
   const raster::DepthTarget& target = *set.targets.at(p.target);
   const Texture2D tex = Texture2D::view(target, p.viewport);
   ClassicReader r;

@@ -82,8 +82,10 @@ struct ClassicReader {
   MapLookups maps;
 };
 
-// The set must outlive the reader (lookups view its targets).
-ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& light, const ClassicSettings& s);
+// The set must outlive the reader (lookups view its targets). `pass`: which of the set's passes (a cascade's
+// slice); the classic map has one.
+ClassicReader make_classic_reader(const ShadowMapSet& set, const ClassicLight& light, const ClassicSettings& s,
+                                  size_t pass = 0);
 
 // The depth bias subtracted from the reference for a receiver with cos(angle to the light) = ndotl.
 inline float depth_bias(const BiasParams& b, float ndotl) {

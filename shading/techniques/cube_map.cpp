@@ -7,6 +7,8 @@
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "shading/techniques/moment_lod.h"
+
 namespace shading::tech {
 
 namespace {
@@ -55,16 +57,25 @@ raster::DrawStats build_cube_moments(raster::Renderer& renderer, const ShadowMap
     views[f] = m.faces[f].view;
   }
   m.cube = TextureCube(std::move(views));
+  m.sampler = moment_sampler(m.params.mips);
   m.sampler.seamless_cube = seamless;
   return stats;
 }
 
-float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, glm::vec3 p, glm::vec3 n) {
-  const OmniRef o = omni_ref(r, p, n);
+float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, const ShadowQuery& q) {
+  const OmniRef o = omni_ref(r, q.p, q.n);
   const glm::vec3 d = o.q - r.position;
   if (r.hemispherical && glm::dot(d, r.direction) < 0.0f) return 0.0f;
   const float ref = glm::length(d) / r.range - o.bias;
-  return moment_visibility(m.params, texture_at(m.cube, m.sampler, d, 0.0f), std::min(ref, 1.0f));
+  // The direction's derivatives are the point's: GL's cube LOD on the face d selects (lookup_cube.h).
+  const glm::vec4 moments = m.cube.levels() > 1 && m.sampler.mip_filter != MipFilter::none
+                                ? texture_grad(m.cube, m.sampler, d, q.dpdx, q.dpdy)
+                                : texture_at(m.cube, m.sampler, d, 0.0f);
+  return moment_visibility(m.params, moments, std::min(ref, 1.0f));
+}
+
+float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, glm::vec3 p, glm::vec3 n) {
+  return cube_moment_visibility(r, m, ShadowQuery{p, n, glm::vec2(0.0f)});
 }
 
 OmniReader make_cube_reader(const ShadowMapSet& set, const OmniLight& light, const OmniSettings& s) {

@@ -32,7 +32,7 @@ struct CubeMoments {
   MomentParams params;
   int blur_radius = 2;
   std::array<MomentMap, 6> faces;
-  TextureCube cube;  // views of the six blurred faces, after build
+  TextureCube cube;  // views of the six blurred faces and their mips (each face's own), after build
   Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
 };
 
@@ -40,7 +40,10 @@ struct CubeMoments {
 raster::DrawStats build_cube_moments(raster::Renderer& renderer, const ShadowMapSet& set, bool seamless,
                                      CubeMoments& m);
 
-// Visibility of world point p (unit normal n) from the faces' moments: 0 behind a hemispherical light.
+// Visibility of a query's point from the faces' moments, at the level of detail of its screen derivatives (the
+// cube's mips, MomentParams::mips): 0 behind a hemispherical light.
+float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, const ShadowQuery& q);
+// The same for world point p (unit normal n) and no derivatives (level 0).
 float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, glm::vec3 p, glm::vec3 n);
 
 // Taps for the Poisson family on a cube: st are the face coordinates of the query's face; a tap at st + offset

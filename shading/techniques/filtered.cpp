@@ -8,19 +8,36 @@
 #include "shading/lookup.h"
 #include "shading/techniques/blur_pass.h"
 #include "shading/techniques/depth_pass.h"
+#include "shading/techniques/moment_lod.h"
 
 namespace shading::tech {
+
+namespace {
+
+// The point the map is read at: p moved along its normal by the `normal` bias.
+glm::vec3 read_point(const FilteredReader& r, glm::vec3 p, glm::vec3 n) {
+  return r.bias.mode == BiasMode::normal ? p + n * r.bias.normal_offset : p;
+}
+
+// Map coordinates of world point x (a perspective map's divided by w, as the lookup's).
+glm::vec2 map_st(const FilteredReader& r, glm::vec3 x) {
+  const glm::vec4 c = r.shadow * glm::vec4(x, 1.0f);
+  if (!r.depth.perspective) return glm::vec2(c.x, c.y);
+  const float w = 1.0f / c.w;
+  return glm::vec2(c.x * w, c.y * w);
+}
+
+}  // namespace
 
 bool filtered_context(const FilteredReader& r, glm::vec3 p, glm::vec3 n, glm::vec2& st, float& depth, bool& lit) {
   lit = false;
   const glm::vec3 to_light = r.kind == LightKind::spot ? glm::normalize(r.position - p) : -r.direction;
-  const glm::vec3 q = r.bias.mode == BiasMode::normal ? p + n * r.bias.normal_offset : p;
+  const glm::vec3 q = read_point(r, p, n);
   const float b = depth_bias(r.bias, glm::dot(n, to_light));
   const glm::vec4 c = r.shadow * glm::vec4(q, 1.0f);
   if (r.depth.perspective) {
     if (!(c.w > 0.0f)) return false;
-    const float w = 1.0f / c.w;
-    st = glm::vec2(c.x * w, c.y * w);
+    st = map_st(r, q);
     if (!(st.x >= 0.0f && st.x <= 1.0f && st.y >= 0.0f && st.y <= 1.0f)) return false;
     depth = r.depth.of_view(r.view * glm::vec4(q, 1.0f)) - b;
   } else {
@@ -33,12 +50,18 @@ bool filtered_context(const FilteredReader& r, glm::vec3 p, glm::vec3 n, glm::ve
   return true;
 }
 
-float filtered_visibility(const FilteredReader& r, glm::vec3 p, glm::vec3 n) {
+float filtered_visibility(const FilteredReader& r, const ShadowQuery& q) {
   glm::vec2 st;
   float d;
   bool lit;
-  if (!filtered_context(r, p, n, st, d, lit)) return lit ? 1.0f : 0.0f;
-  return moment_visibility(r.params, texture(r.moments, r.sampler, st), d);
+  if (!filtered_context(r, q.p, q.n, st, d, lit)) return lit ? 1.0f : 0.0f;
+  const glm::vec4 m =
+      read_moments(r.moments, r.sampler, st, read_point(r, q.p, q.n), q, [&](glm::vec3 x) { return map_st(r, x); });
+  return moment_visibility(r.params, m, d);
+}
+
+float filtered_visibility(const FilteredReader& r, glm::vec3 p, glm::vec3 n) {
+  return filtered_visibility(r, ShadowQuery{p, n, glm::vec2(0.0f)});
 }
 
 raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& set, size_t pass,
@@ -62,6 +85,9 @@ raster::DrawStats filter_pass(raster::Renderer& renderer, const ShadowMapSet& se
       encode_moments(renderer, depth, p.viewport, light_depth, params, *out.map);
   stats += blur_map(renderer, *out.map, *out.scratch, blur_radius);
   out.view = Texture2D::view(*out.map);
+  // The mip chain of the blurred map (moment_lod.h): level 0 stays the target, levels 1.. are box-filtered
+  // copies, each texel the mean of its four parents (mip_chain.h), built in one order whatever the threads.
+  if (params.mips != MipFilter::none) out.view.generate_mips();
   return stats;
 }
 
@@ -78,6 +104,7 @@ raster::DrawStats filter_classic_map(raster::Renderer& renderer, const ShadowMap
   r.direction = light.direction;
   r.bias = bias;
   r.params = params;
+  r.sampler = moment_sampler(params.mips);
   const raster::DrawStats stats = filter_pass(renderer, set, 0, params, blur_radius, out.moments);
   r.moments = out.moments.view;
   return stats;
@@ -96,6 +123,8 @@ MomentParams moment_params(MomentKind kind, const ShadowConfig& c) {
   const Params p(c);
   MomentParams m;
   m.kind = kind;
+  const std::string mips = p.text("moment_mips");
+  m.mips = mips == "none" ? MipFilter::none : mips == "nearest" ? MipFilter::nearest : MipFilter::linear;
   if (m.kind == MomentKind::esm) {
     m.esm_c = float(p.number("esm_c"));
   } else if (m.kind == MomentKind::vsm) {
@@ -137,7 +166,7 @@ class FilteredShadow final : public LightShadow {
     return stats;
   }
   void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const override {
-    for (size_t i = 0; i < q.size(); ++i) vis[i] = filtered_visibility(filtered_.reader, q[i].p, q[i].n);
+    for (size_t i = 0; i < q.size(); ++i) vis[i] = filtered_visibility(filtered_.reader, q[i]);
   }
   bool texel_coords(glm::vec3 p, std::span<const glm::vec3> others, std::span<glm::vec2> out) const override {
     return one_pass_texels(set_, filtered_.reader.shadow, p, others, out);

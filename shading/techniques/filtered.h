@@ -1,8 +1,10 @@
 // The filterable shadow maps: exponential (ESM), variance (VSM) and exponential variance (EVSM, two or four
 // moments) for directional and spot lights, on the classic technique's single map. Building is four passes on
 // the pipeline: the depth pass (depth_pass.h, the classic state), the encode pass (depth → moments, a float
-// target of the kind's channels) and the two blur passes (blur_pass.h). Reading is one bilinear lookup of the
-// blurred moments per point and the kind's visibility formula (moments.h). Formulas, parameters and limits: docs/filtered-shadows.md.
+// target of the kind's channels) and the two blur passes (blur_pass.h), then the blurred map's mip chain.
+// Reading is one lookup of the blurred moments per point, trilinear at the level of detail of the point's screen
+// derivatives (moment_lod.h), and the kind's visibility formula (moments.h). Formulas, parameters and limits:
+// docs/filtered-shadows.md.
 #pragma once
 #include <memory>
 #include <optional>
@@ -28,8 +30,8 @@ struct FilteredReader {
   glm::vec3 position{0.0f}, direction{0.0f, -1.0f, 0.0f};
   BiasParams bias;  // constant, slope (in linear depth units) and normal offset; offset acts in the depth pass
   MomentParams params;
-  Texture2D moments;  // view of the blurred moment target (R32F, RG32F or RGBA32F: moment_format)
-  Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);
+  Texture2D moments;  // view of the blurred moment target (R32F, RG32F or RGBA32F: moment_format), its mips
+  Sampler sampler = Sampler::plain(Filter::linear, Wrap::clamp_to_edge);  // moment_sampler(params.mips)
 };
 
 // Where world point p with unit normal n reads the map and its linear depth there (bias applied); false where
@@ -37,11 +39,15 @@ struct FilteredReader {
 // where `lit` is set instead.
 bool filtered_context(const FilteredReader& r, glm::vec3 p, glm::vec3 n, glm::vec2& st, float& depth, bool& lit);
 
-// Visibility in [0, 1] of world point p with unit normal n.
+// Visibility in [0, 1] of a query's point: one lookup of the moments at the level of detail its screen
+// derivatives give (moment_lod.h), the kind's formula.
+float filtered_visibility(const FilteredReader& r, const ShadowQuery& q);
+// The same for world point p with unit normal n and no derivatives (level 0).
 float filtered_visibility(const FilteredReader& r, glm::vec3 p, glm::vec3 n);
 
 // One pass of a built depth-map set turned filterable: the moment target (the pass's viewport, encoded then
-// blurred on its own, so the slices of an atlas do not blur into each other), its blur scratch and a view.
+// blurred on its own, so the slices of an atlas do not blur into each other), its blur scratch and a view (with
+// the blurred map's mip chain unless MomentParams::mips is none).
 struct MomentMap {
   std::unique_ptr<raster::ColorTarget> map, scratch;
   Texture2D view;

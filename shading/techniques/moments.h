@@ -10,6 +10,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "shading/sampler.h"
+
 namespace shading::tech {
 
 enum class MomentKind : uint8_t { esm, vsm, evsm2, evsm4 };
@@ -26,6 +28,9 @@ struct MomentParams {
   float negative = 5.0f;        // EVSM negative warp exponent
   float light_bleed = 0.2f;     // VSM, EVSM: linstep(light_bleed, 1, p)
   float min_variance = 2e-5f;   // in depth units squared (EVSM: scaled by the warp's slope squared; 1e-7 there)
+  // The blurred map's mip chain and how it is read (`moment_mips`): none (level 0 only, bilinear), nearest (the
+  // nearer level, GL's LINEAR_MIPMAP_NEAREST) or linear (trilinear, LINEAR_MIPMAP_LINEAR). moment_lod.h.
+  MipFilter mips = MipFilter::linear;
 };
 
 // EVSM's warps of a depth d in [0, 1], taken to x = 2d − 1 in [−1, 1] first so that both exponents reach

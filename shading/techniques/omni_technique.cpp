@@ -77,7 +77,7 @@ class OmniShadow final : public LightShadow {
 
   void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const override {
     if (moments_) {
-      for (size_t i = 0; i < q.size(); ++i) vis[i] = cube_moment_visibility(reader_, *moments_, q[i].p, q[i].n);
+      for (size_t i = 0; i < q.size(); ++i) vis[i] = cube_moment_visibility(reader_, *moments_, q[i]);
       return;
     }
     omni_visibility(reader_, q, vis);

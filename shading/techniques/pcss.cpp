@@ -94,10 +94,10 @@ float pcss_visibility(const PcssReader& r, glm::vec3 p, glm::vec3 n, glm::vec2 f
 }
 
 PcssReader make_pcss_reader(const ShadowMapSet& set, const ClassicLight& light, const ClassicSettings& settings,
-                            float size) {
-  const ShadowPass& p = set.passes.at(0);
+                            float size, size_t pass) {
+  const ShadowPass& p = set.passes.at(pass);
   PcssReader r;
-  r.classic = make_classic_reader(set, light, settings);
+  r.classic = make_classic_reader(set, light, settings, pass);
   r.map = Texture2D::view(*set.targets.at(p.target), p.viewport);
   r.depth = LightDepth::of(p.proj, p.perspective);
   r.texel = glm::vec2(1.0f / float(p.viewport.width), 1.0f / float(p.viewport.height));

@@ -35,10 +35,12 @@ struct PcssReader {
 // not compare the surface with itself. Clamped to 0.01 per texel (grazing planes).
 glm::vec2 receiver_gradient(const PcssReader& r, glm::vec3 p, glm::vec3 n, glm::vec2 st, float z);
 
-// The reader over a built classic map set (one pass); `size` is the light's angular diameter in degrees
-// (directional) or its radius in metres (spot).
+// The reader over pass `pass` of a built map set (the classic map's one pass, or a cascade's slice); `size` is
+// the light's angular diameter in degrees (directional) or its radius in metres (spot). Every conversion to map
+// coordinates (metres per unit of depth, map coordinates per metre, one texel) comes from that pass's own
+// projection and viewport, so slices of different texel sizes give the same penumbra in metres.
 PcssReader make_pcss_reader(const ShadowMapSet& set, const ClassicLight& light, const ClassicSettings& settings,
-                            float size);
+                            float size, size_t pass = 0);
 
 // The search region's radius in map coordinates for a receiver at window depth ref: directional, the light's
 // cone between the map's near plane and the receiver; spot, the light's disc seen from the receiver, cut at the

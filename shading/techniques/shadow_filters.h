@@ -24,11 +24,15 @@ struct SampleContext {
   glm::vec3 world;   // world position (before any normal offset)
 };
 
-// One point a shader asks a light's visibility for: world position, unit normal and window position.
+// One point a shader asks a light's visibility for: world position, unit normal and window position, and the
+// world position's screen derivatives: its quad's coarse differences, one pixel right (lane 1 − lane 0) and one
+// pixel up (lane 2 − lane 0), as llvmpipe takes implicit derivatives. Techniques that read mip-mapped maps derive
+// the level of detail from them (moment_lod.h); zero (no quad) means magnification, level 0.
 struct ShadowQuery {
   glm::vec3 p;
   glm::vec3 n;
   glm::vec2 frag;
+  glm::vec3 dpdx{0.0f}, dpdy{0.0f};
 };
 
 // The two lookups a filter can be built from, over the same map: `nearest` (one compare, NEAREST) and

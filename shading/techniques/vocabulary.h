@@ -179,6 +179,11 @@ inline constexpr ParamSpec kFaceParams[] = {
 inline constexpr ParamSpec kBlurParam = {
     "blur_radius", "--blur-radius", ParamKind::integer, "2",
     "esm, vsm, evsm2, evsm4, cascades' and cube's moments: box blur radius in texels of the separable blur passes (0: no blur)", 0, 16};
+inline constexpr ParamSpec kMomentMipsParam = {
+    "moment_mips", "--moment-mips", ParamKind::choice, "linear",
+    "esm, vsm, evsm2, evsm4, cascades' and cube's moments: mip chain of the blurred map, read at the level of "
+    "detail of the receiver's screen derivatives: trilinear (linear), nearest level (nearest) or level 0 only (none)",
+    0, 0, {"linear", "nearest", "none"}};
 inline constexpr ParamSpec kLightBleedParam = {
     "light_bleed", "--light-bleed", ParamKind::number, "0.2",
     "vsm, evsm2, evsm4 (also as cascades' and cube's moments): light-bleeding reduction, the Chebyshev bound p remapped by linstep(amount, 1, p)", 0,
@@ -198,10 +203,10 @@ inline constexpr ParamSpec kEvsmNegativeParam = {
 inline constexpr ParamSpec kEvsmMinVarianceParam = {
     "evsm_min_variance", "--evsm-min-variance", ParamKind::number, "0.0000001",
     "evsm2, evsm4 (also as cascades' and cube's moments): smallest variance in depth units squared, scaled by each warp's slope squared", 0, 0.01};
-inline constexpr ParamSpec kEsmParams[] = {kEsmCParam, kBlurParam};
-inline constexpr ParamSpec kVsmParams[] = {kBlurParam, kLightBleedParam, kMinVarianceParam};
+inline constexpr ParamSpec kEsmParams[] = {kEsmCParam, kBlurParam, kMomentMipsParam};
+inline constexpr ParamSpec kVsmParams[] = {kBlurParam, kMomentMipsParam, kLightBleedParam, kMinVarianceParam};
 inline constexpr ParamSpec kEvsmParams[] = {
-    kEvsmPositiveParam, kEvsmNegativeParam, kEvsmMinVarianceParam, kBlurParam, kLightBleedParam,
+    kEvsmPositiveParam, kEvsmNegativeParam, kEvsmMinVarianceParam, kBlurParam, kMomentMipsParam, kLightBleedParam,
 };
 inline constexpr ParamSpec kMomentsParam = {
     "moments", "--moments", ParamKind::choice, "none",
@@ -215,12 +220,21 @@ inline constexpr ParamSpec kCubeParams[] = {
     kMomentsParam,
     kEsmCParam,
     kBlurParam,
+    kMomentMipsParam,
     kLightBleedParam,
     kMinVarianceParam,
     kEvsmPositiveParam,
     kEvsmNegativeParam,
     kEvsmMinVarianceParam,
 };
+inline constexpr ParamSpec kLightAngleParam = {
+    "light_angle", "--light-angle", ParamKind::number, "1",
+    "pcss, and cascades with soft_shadows = pcss: the directional light's angular diameter in degrees (the sun: 0.53)",
+    0, 30};
+inline constexpr ParamSpec kSoftShadowsParam = {
+    "soft_shadows", "--soft-shadows", ParamKind::choice, "none",
+    "cascades: each slice's map read through the light's filter (none), or with PCSS (pcss): blocker search and "
+    "penumbra in the slice's own texels from light_angle", 0, 0, {"none", "pcss"}};
 inline constexpr ParamSpec kCascadeParams[] = {
     {"cascades", "--cascades", ParamKind::integer, "4", "cascades: number of slices of the view frustum", 1, 4},
     {"split_lambda", "--split-lambda", ParamKind::number, "0.75",
@@ -232,10 +246,13 @@ inline constexpr ParamSpec kCascadeParams[] = {
     {"cascade_warp", "--cascade-warp", ParamKind::choice, "none",
      "cascades: each slice's map orthographic, or warped by LiSPSM", 0, 0, {"none", "lispsm"}},
     kMomentsParam,
+    kSoftShadowsParam,
+    kLightAngleParam,
     kMapLayoutParam,
     kViewRangeParam,
     kEsmCParam,
     kBlurParam,
+    kMomentMipsParam,
     kLightBleedParam,
     kMinVarianceParam,
     kEvsmPositiveParam,
@@ -243,8 +260,7 @@ inline constexpr ParamSpec kCascadeParams[] = {
     kEvsmMinVarianceParam,
 };
 inline constexpr ParamSpec kPcssParams[] = {
-    {"light_angle", "--light-angle", ParamKind::number, "1",
-     "pcss, directional light: its angular diameter in degrees (the sun: 0.53)", 0, 30},
+    kLightAngleParam,
     {"light_radius", "--light-radius", ParamKind::number, "0.1", "pcss, spot light: its radius in metres", 0, 100},
 };
 

@@ -148,8 +148,11 @@ scenes::Scene leaf_scene(const fs::path& texture, scenes::AlphaMode mode, tech::
   light.shadow.technique = technique;
   light.shadow.map_size = 2048;
   light.shadow.cull_front = false;  // the leaf is one sheet: its front faces must enter the map
-  // The filterable maps unblurred: their blur moves a hard edge by up to its radius, whatever the caster.
+  // The filterable maps unblurred and without mips: their blur moves a hard edge by up to its radius, whatever
+  // the caster, and so does a coarser level where a pixel covers several texels of the 2048² map (ESM's edge
+  // moves towards the shadow).
   if (tech::find_param(technique, "blur_radius")) light.shadow.params["blur_radius"] = 0.0;
+  if (tech::find_param(technique, "moment_mips")) light.shadow.params["moment_mips"] = std::string("none");
   s.lights = {light};
   return s;
 }

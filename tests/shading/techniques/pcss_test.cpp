@@ -9,6 +9,7 @@
 
 #include "shading/techniques/pcss.h"
 #include "shading/techniques/poisson.h"
+#include "tests/shading/techniques/pcss_test_util.h"
 #include "tests/shading/techniques/technique_test_util.h"
 #include "tests/support.h"
 
@@ -66,26 +67,6 @@ float penumbra_width(const Built& b, float y, float step) {
   return x90 - x10;
 }
 
-// The same width for the ideal filter: 16 disc points, each turned uniformly, a kernel of radius k over a
-// sharp edge. Tap i at radius r_i lands lit with probability P(x + r_i k cos φ > 0).
-float ideal_width(float k) {
-  auto profile = [&](float x) {
-    float v = 0.0f;
-    for (const glm::vec2& d : kPoissonDisk) {
-      const float r = std::sqrt(d.x * d.x + d.y * d.y) * k;
-      if (x >= r) v += 1.0f;
-      else if (x > -r) v += 1.0f - std::acos(x / r) / 3.14159265f;
-    }
-    return v / 16.0f;
-  };
-  float x10 = NAN, x90 = NAN;
-  for (float x = -2.0f * k; x <= 2.0f * k; x += k / 2000.0f) {
-    if (std::isnan(x10) && profile(x) >= 0.1f) x10 = x;
-    if (std::isnan(x90) && profile(x) >= 0.9f) x90 = x;
-  }
-  return x90 - x10;
-}
-
 TEST(Pcss, PenumbraGrowsLinearlyWithReceiverBlockerDistance) {
   raster::Renderer r(testsupport::test_threads());
   const float tan_half = std::tan(0.5f * kAngle * 3.14159265f / 180.0f);
@@ -98,7 +79,7 @@ TEST(Pcss, PenumbraGrowsLinearlyWithReceiverBlockerDistance) {
     const Built b = build(r, s, kSun, fixed_fit(), kAngle);
     const float measured = penumbra_width(b, 0.0f, kTexel / 4.0f);
     const float k = h * tan_half;  // the kernel radius similar triangles give, metres
-    const float ideal = ideal_width(k);
+    const float ideal = techtest::ideal_pcss_width(k);
     std::printf("h = %.1f m: penumbra (10-90 %%) %.4f m = %.1f texels, ideal %.4f m (kernel %.4f m)\n", h, measured,
                 measured / kTexel, ideal, k);
     EXPECT_NEAR(measured, ideal, 0.1f * ideal) << "h = " << h;
@@ -144,8 +125,8 @@ TEST(Pcss, SpotPenumbraFollowsTheLightRadius) {
     // Similar triangles: penumbra on the floor = 2 R · (8 − 6) / 6 … the shadow edge is at x = 0 · 8/6 = 0.
     const float k = radius * 2.0f / 6.0f;
     const float measured = penumbra_width(b, 0.0f, 0.002f);
-    std::printf("spot radius %.2f m: penumbra %.4f m, ideal %.4f m\n", radius, measured, ideal_width(k));
-    EXPECT_NEAR(measured, ideal_width(k), 0.15f * ideal_width(k)) << "radius " << radius;
+    std::printf("spot radius %.2f m: penumbra %.4f m, ideal %.4f m\n", radius, measured, techtest::ideal_pcss_width(k));
+    EXPECT_NEAR(measured, techtest::ideal_pcss_width(k), 0.15f * techtest::ideal_pcss_width(k)) << "radius " << radius;
     widths.push_back(measured);
   }
   EXPECT_NEAR(widths[2] / widths[0], 4.0f, 0.4f);
