@@ -19,16 +19,9 @@ using namespace shading::tech;
 
 namespace {
 
-// A camera at (0, 4, 12) looking down the −z axis and a little down, over a 40 × 60 m floor at y = 0.
-CameraView camera() {
-  CameraView c;
-  c.eye = {0.0f, 4.0f, 12.0f};
-  c.forward = glm::normalize(glm::vec3(0.0f, -0.25f, -1.0f));
-  c.view = glm::lookAt(c.eye, c.eye + c.forward, glm::vec3(0, 1, 0));
-  c.proj = glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 60.0f);
-  c.near = 0.1f, c.far = 60.0f;
-  return c;
-}
+// The camera over the floor (technique_test_util.h).
+CameraView camera() { return techtest::floor_camera(); }
+
 
 PlanInputs inputs(const techtest::Soup& casters) {
   PlanInputs in;

@@ -28,21 +28,8 @@ ClassicFit fixed_fit() {
 
 const ClassicLight kSun{LightKind::directional, {0, 0, 0}, {0, -1, 0}};
 
-struct Filtered {
-  std::unique_ptr<ShadowMapSet> set;
-  FilteredMap map;
-};
-
-Filtered build(raster::Renderer& r, const techtest::Soup& soup, const MomentParams& m, int radius) {
-  ClassicSettings s;
-  s.bias.mode = BiasMode::none;
-  s.map_size = kMap;
-  s.depth_format = raster::DepthFormat::d32f;
-  Filtered f;
-  f.set = std::make_unique<ShadowMapSet>(plan_classic_map(kSun, s, fixed_fit()));
-  build_maps(r, *f.set, CasterGeometry{soup.positions, soup.indices, {}}, classic_depth_options(s));
-  filter_classic_map(r, *f.set, kSun, s.bias, m, radius, f.map);
-  return f;
+techtest::FilteredBuilt build(raster::Renderer& r, const techtest::Soup& soup, const MomentParams& m, int radius) {
+  return techtest::build_filtered(r, soup, kSun, fixed_fit(), kMap, m, radius);
 }
 
 // One occluder plane at y = 1 over the whole map.
@@ -60,7 +47,7 @@ TEST(FilteredAnalytic, EsmSingleOccluderPlaneIsExponential) {
     MomentParams m;
     m.kind = MomentKind::esm;
     m.esm_c = c;
-    const Filtered f = build(r, occluder_plane(), m, 2);
+    const techtest::FilteredBuilt f = build(r, occluder_plane(), m, 2);
     for (float y : kHeights) {
       const float expected = std::exp(c * (depth_at(1.0f) - depth_at(y)));
       const float got = filtered_visibility(f.map.reader, {0.37f, y, -1.21f}, {0, 1, 0});
@@ -77,7 +64,7 @@ TEST(FilteredAnalytic, VsmSingleOccluderPlaneIsChebyshevOfMinimumVariance) {
   m.kind = MomentKind::vsm;
   m.light_bleed = 0.0f;
   m.min_variance = 1e-4f;
-  const Filtered f = build(r, occluder_plane(), m, 2);
+  const techtest::FilteredBuilt f = build(r, occluder_plane(), m, 2);
   for (float y : kHeights) {
     const float d = depth_at(y) - depth_at(1.0f);
     const float expected = m.min_variance / (m.min_variance + d * d);
@@ -93,7 +80,7 @@ TEST(FilteredAnalytic, EvsmSingleOccluderPlaneFollowsTheWarpedBound) {
     m.kind = kind;
     m.light_bleed = 0.0f;
     m.min_variance = 1e-7f;
-    const Filtered f = build(r, occluder_plane(), m, 2);
+    const techtest::FilteredBuilt f = build(r, occluder_plane(), m, 2);
     for (float y : kHeights) {
       const float zo = depth_at(1.0f), zr = depth_at(y);
       const glm::vec4 mo = moments(m, zo);  // a plane: the blurred texel is the plane's own moments
@@ -138,7 +125,7 @@ Bleeding bleeding(MomentKind kind, float amount) {
   m.kind = kind;
   m.light_bleed = amount;
   if (kind != MomentKind::vsm) m.min_variance = 1e-7f;  // the evsm_min_variance default
-  const Filtered f = build(r, s, m, 8);
+  const techtest::FilteredBuilt f = build(r, s, m, 8);
   Bleeding b;
   b.at_edge = filtered_visibility(f.map.reader, {0.0f, 0.0f, 0.3f}, {0, 1, 0});
   for (float x = -1.0f; x <= 1.0f; x += 0.01f) {
@@ -181,7 +168,7 @@ TEST(FilteredAnalytic, BlurKeepsAStraightEdgeMonotonicAndCentred) {
   s.horizontal(-6, 0, -6, 6, 1.0f);
   MomentParams m;
   m.kind = MomentKind::esm;
-  const Filtered f = build(r, s, m, 4);
+  const techtest::FilteredBuilt f = build(r, s, m, 4);
   float prev = -1.0f;
   for (float x = -0.5f; x <= 0.5f; x += 0.005f) {
     const float v = filtered_visibility(f.map.reader, {x, 0.0f, 0.1f}, {0, 1, 0});

@@ -30,6 +30,9 @@ using shading::MipFilter;
 
 namespace {
 
+// The camera over the floor (technique_test_util.h).
+CameraView camera() { return techtest::floor_camera(); }
+
 // Light straight down over an 8 × 8 m box, y from 8 (depth 0) to −8 (depth 1), on a 256² map: 3.125 cm texels.
 constexpr int kMap = 256;
 constexpr float kTexel = 8.0f / kMap;
@@ -59,21 +62,8 @@ MomentParams vsm(MipFilter mips) {
   return m;
 }
 
-struct Filtered {
-  std::unique_ptr<ShadowMapSet> set;
-  FilteredMap map;
-};
-
-Filtered build(raster::Renderer& r, const techtest::Soup& soup, const MomentParams& m, int radius) {
-  ClassicSettings s;
-  s.bias.mode = BiasMode::none;
-  s.map_size = kMap;
-  s.depth_format = raster::DepthFormat::d32f;
-  Filtered f;
-  f.set = std::make_unique<ShadowMapSet>(plan_classic_map(kSun, s, fixed_fit()));
-  build_maps(r, *f.set, CasterGeometry{soup.positions, soup.indices, {}}, classic_depth_options(s));
-  filter_classic_map(r, *f.set, kSun, s.bias, m, radius, f.map);
-  return f;
+techtest::FilteredBuilt build(raster::Renderer& r, const techtest::Soup& soup, const MomentParams& m, int radius) {
+  return techtest::build_filtered(r, soup, kSun, fixed_fit(), kMap, m, radius);
 }
 
 // Every texel of every level l >= 1 equals the mean of its four parents, computed in double and rounded once
@@ -113,7 +103,7 @@ TEST(MomentMips, EachLevelIsTheBoxMeanOfItsParents) {
     MomentParams m = vsm(MipFilter::linear);
     m.kind = kind;
     m.esm_c = 40.0f;
-    const Filtered f = build(r, soup, m, 1);
+    const techtest::FilteredBuilt f = build(r, soup, m, 1);
     const shading::Texture2D& t = f.map.reader.moments;
     ASSERT_EQ(t.levels(), shading::mip_level_count(kMap, kMap));
     EXPECT_FALSE(t.owns_level(0)) << "level 0 is the blurred target itself";
@@ -186,9 +176,9 @@ float spread(std::span<const float> v) {
 TEST(MomentMips, AMinifiedReceiverReadsACoarserLevelAndDoesNotAlias) {
   raster::Renderer r(testsupport::test_threads());
   const techtest::Soup soup = floor_and_bars();
-  const Filtered none = build(r, soup, vsm(MipFilter::none), 0);
-  const Filtered trilinear = build(r, soup, vsm(MipFilter::linear), 0);
-  const Filtered nearest = build(r, soup, vsm(MipFilter::nearest), 0);
+  const techtest::FilteredBuilt none = build(r, soup, vsm(MipFilter::none), 0);
+  const techtest::FilteredBuilt trilinear = build(r, soup, vsm(MipFilter::linear), 0);
+  const techtest::FilteredBuilt nearest = build(r, soup, vsm(MipFilter::nearest), 0);
   // A pixel 24 texels wide (λ = 4.58, between levels 4 and 5): six whole periods, so the reference is the bars'
   // coverage, 1/2, wherever the pixel lies.
   const float footprint = 24.0f * kTexel;
@@ -211,8 +201,8 @@ TEST(MomentMips, AMinifiedReceiverReadsACoarserLevelAndDoesNotAlias) {
 TEST(MomentMips, AMagnifiedReceiverReadsLevelZeroAsWithoutMips) {
   raster::Renderer r(testsupport::test_threads());
   const techtest::Soup soup = floor_and_bars();
-  const Filtered none = build(r, soup, vsm(MipFilter::none), 1);
-  const Filtered mips = build(r, soup, vsm(MipFilter::linear), 1);
+  const techtest::FilteredBuilt none = build(r, soup, vsm(MipFilter::none), 1);
+  const techtest::FilteredBuilt mips = build(r, soup, vsm(MipFilter::linear), 1);
   int partial = 0;
   for (int k = 0; k < 200; ++k) {
     const glm::vec3 p(-3.0f + 0.0301f * float(k), 0.0f, 0.37f);
@@ -230,7 +220,7 @@ TEST(MomentMips, SameAnswerAtAnyThreadCount) {
   std::vector<float> first;
   for (int threads : {0, 1, 2, 7}) {
     raster::Renderer r(threads);
-    const Filtered f = build(r, soup, vsm(MipFilter::linear), 2);
+    const techtest::FilteredBuilt f = build(r, soup, vsm(MipFilter::linear), 2);
     std::vector<float> got;
     for (int l = 0; l < f.map.reader.moments.levels(); ++l)
       for (int j = 0; j < f.map.reader.moments.height(l); ++j)
@@ -248,16 +238,6 @@ TEST(MomentMips, SameAnswerAtAnyThreadCount) {
 // Cascades: each slice's moment map has its own chain and its own texel size, so the level follows the slice.
 // A camera over the floor looking down −z; bars 0.25 m apart everywhere; pixels 1 m wide along x read the bars'
 // coverage (1/2) in every slice with mips, and alias without.
-CameraView camera() {
-  CameraView c;
-  c.eye = {0.0f, 4.0f, 12.0f};
-  c.forward = glm::normalize(glm::vec3(0.0f, -0.25f, -1.0f));
-  c.view = glm::lookAt(c.eye, c.eye + c.forward, glm::vec3(0, 1, 0));
-  c.proj = glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 60.0f);
-  c.near = 0.1f, c.far = 60.0f;
-  return c;
-}
-
 TEST(MomentMips, EveryCascadeReadsItsOwnLevel) {
   raster::Renderer r(testsupport::test_threads());
   techtest::Soup soup;
