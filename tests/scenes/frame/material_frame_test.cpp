@@ -410,16 +410,19 @@ TEST(MaterialFrame, EmbeddedImagesCastTheSameShadowAsTheirFile) {
   }
 }
 
-// Embedded bytes that are not a PNG or JPEG, or a PNG cut short, fail the frame before anything is drawn, naming
-// the glTF file, the image's place in it and the material; a buffer view past its buffer fails the import,
+// Embedded bytes that are not a PNG or JPEG, a PNG cut short or one with a damaged chunk fail the frame before
+// anything is drawn, naming the glTF file, the image's place in it and the material; a buffer view past its buffer fails the import,
 // naming the view.
 TEST(MaterialFrame, BrokenEmbeddedImagesNameFileImageAndMaterial) {
   const fs::path dir = testsupport::temp_dir("material_embedded_broken");
   const std::vector<uint8_t> png = file_bytes(disc_texture("material_embedded_broken_png"));
   const std::string text = "no image here";
+  std::vector<uint8_t> damaged = png;
+  damaged[40] ^= 0x5a;  // inside IHDR's or the first data chunk's bytes: its CRC no longer matches
   const std::vector<std::pair<std::vector<uint8_t>, std::string>> cases{
       {std::vector<uint8_t>(text.begin(), text.end()), "neither PNG nor JPEG"},
-      {std::vector<uint8_t>(png.begin(), png.begin() + 60), "cannot"}};
+      {std::vector<uint8_t>(png.begin(), png.begin() + 60), "the PNG is cut short"},
+      {damaged, "fails its CRC"}};
   raster::Renderer renderer(0);
   for (const auto& [bytes, reason] : cases) {
     testsupport::GltfFixture g = embedded_leaf({{"mimeType", "image/png"}});
