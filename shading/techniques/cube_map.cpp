@@ -74,10 +74,6 @@ float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, const Sh
   return moment_visibility(m.params, moments, std::min(ref, 1.0f));
 }
 
-float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, glm::vec3 p, glm::vec3 n) {
-  return cube_moment_visibility(r, m, ShadowQuery{p, n, glm::vec2(0.0f)});
-}
-
 OmniReader make_cube_reader(const ShadowMapSet& set, const OmniLight& light, const OmniSettings& s) {
   OmniReader r = omni_reader_base(OmniKind::cube, light_frame(light.position, light.direction), light, s);
   r.cube = cube_texture(set);

@@ -43,8 +43,6 @@ raster::DrawStats build_cube_moments(raster::Renderer& renderer, const ShadowMap
 // Visibility of a query's point from the faces' moments, at the level of detail of its screen derivatives (the
 // cube's mips, MomentParams::mips): 0 behind a hemispherical light.
 float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, const ShadowQuery& q);
-// The same for world point p (unit normal n) and no derivatives (level 0).
-float cube_moment_visibility(const OmniReader& r, const CubeMoments& m, glm::vec3 p, glm::vec3 n);
 
 // Taps for the Poisson family on a cube: st are the face coordinates of the query's face; a tap at st + offset
 // goes back to a direction on that face's plane and is looked up like any other (a seamless lookup then reads
