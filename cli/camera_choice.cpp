@@ -13,8 +13,10 @@
 #include "cli/cli_common.h"
 #include "scenes/camera_math.h"
 #include "scenes/scene_queries.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 // --camera orbit:AZ,EL[,DIST]: azimuth (from +Z towards +X) and elevation in degrees, distance in metres (0: framed).
 glm::vec3 parse_orbit(const std::string& spec) {
@@ -80,4 +82,5 @@ size_t choose_camera(scenes::Scene& scene, const std::string& spec) {
   throw CliError("--camera", "no camera named '" + spec + "' (cameras: " + names + "; or an index, or orbit:AZ,EL)");
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -7,8 +7,10 @@
 #include <glm/vec3.hpp>
 
 #include "scenes/scene.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 // orbit:AZ,EL[,DIST] as (azimuth from +Z towards +X, elevation, distance; 0: framed). CliError on --camera.
 glm::vec3 parse_orbit(const std::string& spec);
@@ -17,4 +19,5 @@ glm::vec3 parse_orbit(const std::string& spec);
 // CliError on --camera for a name or index the scene does not have.
 size_t choose_camera(scenes::Scene& scene, const std::string& spec);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

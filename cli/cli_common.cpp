@@ -14,8 +14,10 @@
 #include "scenes/builtin_scenes.h"
 #include "scenes/scene_build.h"
 #include "scenes/stage.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 bool parse_int(std::string_view s, long long& out) {
@@ -159,4 +161,5 @@ void Progress::update(const std::string& line) {
   line_ = line;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -17,8 +17,10 @@
 
 #include "scenes/scene.h"
 #include "scenes/stage.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 // Bad input found by the CLI itself. what() is `WHERE: what is wrong`; WHERE is an option name or a file.
 class CliError : public std::runtime_error {
@@ -107,4 +109,5 @@ void check_output_dir(const std::string& file, const std::string& option);
 // A file's lower-case extension with its dot (".exr"), for format decisions.
 std::string lower_extension(const std::filesystem::path& path);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

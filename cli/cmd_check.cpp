@@ -24,8 +24,10 @@
 #include "cli/json_output.h"
 #include "cli/render_line.h"
 #include "scenes/io/atomic_write.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 namespace fs = std::filesystem;
@@ -298,4 +300,5 @@ Command add_check_command(CLI::App& parent) {
   return {app, [args] { return run_check(*args); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

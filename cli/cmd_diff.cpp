@@ -19,8 +19,10 @@
 #include "raster/target.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/png_frame.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 struct DiffArgs {
@@ -88,4 +90,5 @@ Command add_diff_command(CLI::App& parent) {
   return {app, [args] { return run_diff(*args); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -29,8 +29,10 @@
 #include "scenes/reference/frame_reference.h"
 #include "scenes/reference/shimmer.h"
 #include "scenes/shadow_settings.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 namespace tech = shading::tech;
@@ -299,4 +301,5 @@ Command add_eval_command(CLI::App& parent) {
   return {app, [args] { return run_eval(*args); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -13,8 +13,10 @@
 
 #include "cli/cli_common.h"
 #include "cli/eval_report.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 namespace fs = std::filesystem;
@@ -111,4 +113,5 @@ Command add_eval_merge_command(CLI::App& parent) {
   return {app, [args] { return run_merge(*args); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -21,8 +21,10 @@
 #include "raster/limits.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/png_frame.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 struct InspectArgs {
@@ -253,4 +255,5 @@ Command add_inspect_command(CLI::App& parent) {
   return {app, [args] { return run_inspect(*args); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -13,8 +13,10 @@
 #include "cli/json_output.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/shadow_settings.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 namespace tech = shading::tech;
@@ -115,4 +117,5 @@ Command add_list_command(CLI::App& parent) {
   return {app, [json] { return run_list(*json); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

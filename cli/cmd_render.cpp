@@ -33,8 +33,10 @@
 #include "scenes/io/png_frame.h"
 #include "scenes/shadow_settings.h"
 #include "scenes/stage.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 struct RenderArgs {
@@ -626,4 +628,5 @@ Command add_render_command(CLI::App& parent) {
   return {app, [args] { return run_render(*args); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -14,8 +14,10 @@
 #include "cli/cli_common.h"
 #include "cli/json_output.h"
 #include "scenes/io/atomic_write.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 struct MergeArgs {
@@ -100,4 +102,5 @@ Command add_render_merge_command(CLI::App& parent) {
   return {app, [args] { return run_merge(*args); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -11,8 +11,10 @@
 #include "scenes/builtin_scenes.h"
 #include "scenes/io/atomic_write.h"
 #include "scenes/scene_json.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 struct ExportArgs {
@@ -55,4 +57,5 @@ Command add_scene_command(CLI::App& parent) {
   return {app, [args] { return run_export(*args); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -17,8 +17,10 @@
 #include "scenes/scene_build.h"
 #include "scenes/scene_queries.h"
 #include "scenes/shadow_settings.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 // World-space positions in, clip space out through one light matrix: the depth-only path of the pipeline.
@@ -122,4 +124,5 @@ Command add_shadowmap_command(CLI::App& parent) {
   return {app, [args] { return run_shadowmap(*args); }};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

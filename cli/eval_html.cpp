@@ -7,8 +7,10 @@
 
 #include "cli/cli_common.h"
 #include "cli/eval_report.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -113,4 +115,5 @@ std::string eval_html(const nlohmann::json& report, const ContactSheets& sheets)
   return h.str();
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -7,8 +7,10 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 // Each combination's contact sheet as PNG bytes, by combination label.
 using ContactSheets = std::map<std::string, std::vector<unsigned char>>;
@@ -17,4 +19,5 @@ using ContactSheets = std::map<std::string, std::vector<unsigned char>>;
 // CliError naming it.
 std::string eval_html(const nlohmann::json& report, const ContactSheets& sheets);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -7,8 +7,10 @@
 #include "cli/eval_html.h"
 #include "scenes/io/atomic_write.h"
 #include "scenes/io/io_error.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -86,4 +88,5 @@ void write_eval_report(const std::filesystem::path& dir, const nlohmann::json& r
   batch.commit();
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

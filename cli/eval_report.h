@@ -10,8 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/eval_html.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 // Combinations K with K mod count == index belong to the shard.
 struct Shard {
@@ -32,4 +34,5 @@ std::string eval_csv(const nlohmann::json& results);
 // together, so a full disk or a failed write leaves none of them (and no damaged older file).
 void write_eval_report(const std::filesystem::path& dir, const nlohmann::json& report, const ContactSheets& sheets);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

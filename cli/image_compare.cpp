@@ -14,8 +14,10 @@
 #include "raster/target.h"
 #include "scenes/io/exr_map.h"
 #include "scenes/io/png_frame.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 // A map's chosen channel as a one-channel float image, top row first (the files' order).
@@ -158,4 +160,5 @@ FailOver parse_fail_over(const std::string& text, const std::string& where) {
   return f;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -6,8 +6,10 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 struct CompareOptions {
   double tolerance = 0.0;  // largest difference per pixel that is not "over"
@@ -30,4 +32,5 @@ FailOver parse_fail_over(const std::string& text, const std::string& where);
 // Whether a comparison's pixels over the tolerance exceed `limit`.
 bool over_limit(const nlohmann::json& result, const FailOver& limit);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -12,8 +12,10 @@
 #include "cli/cli_common.h"
 #include "scenes/io/exr_header.h"
 #include "scenes/io/quiet_stderr.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 ImageKind image_kind(const std::string& file) {
   const std::string e = lower_extension(file);
@@ -100,4 +102,5 @@ OIIO::ImageBuf read_image(const std::string& file) {
   return buf;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -7,8 +7,10 @@
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 // The kinds of file the commands read, by extension.
 enum class ImageKind { exr, png };
@@ -31,4 +33,5 @@ ChannelChoice choose_depth_channel(const std::vector<std::string>& channels, con
 // top row first. Throws CliError naming the file when it cannot be read.
 OIIO::ImageBuf read_image(const std::string& file);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

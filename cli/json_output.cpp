@@ -10,19 +10,15 @@
 #ifndef SHADOWLAB_VERSION
 #define SHADOWLAB_VERSION "unknown"
 #endif
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
 // The SIMD path the pipeline's stages were compiled for (raster/simd/vec.h chooses at compile time).
-const char* simd_path() {
-#if defined(__AVX2__)
-  return "avx2";
-#else
-  return "scalar";
-#endif
-}
+const char* simd_path() { return SHADOWLAB_ISA_NAME; }
 
 }  // namespace
 
@@ -44,4 +40,5 @@ void print_json(nlohmann::json doc) {
   std::fflush(stdout);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -4,8 +4,10 @@
 #include <cctype>
 
 #include "cli/cli_common.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 std::optional<size_t> choose_light(scenes::Scene& scene, const std::string& spec) {
   if (spec.empty()) return std::nullopt;
@@ -36,4 +38,5 @@ std::string light_field(const std::string& field, std::optional<size_t> chosen) 
   return "lights[" + std::to_string(*chosen) + "]" + field.substr(first.size());
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

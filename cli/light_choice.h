@@ -6,8 +6,10 @@
 #include <string>
 
 #include "scenes/scene.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 // Keeps only the light `spec` names (its name, or its index in the scene's lights) and returns that index;
 // nullopt and no change for an empty spec. CliError on --light for a name or index the scene does not have,
@@ -18,4 +20,5 @@ std::optional<size_t> choose_light(scenes::Scene& scene, const std::string& spec
 // the scene as loaded (`lights[K]...`), so a message points at the light in the file; any other field unchanged.
 std::string light_field(const std::string& field, std::optional<size_t> chosen);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

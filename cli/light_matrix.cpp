@@ -10,8 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 namespace {
 
 glm::mat4 matrix_of(const nlohmann::json& value, const std::string& file, const std::string& key) {
@@ -67,4 +69,5 @@ LightMatrices read_light_matrices(const std::filesystem::path& path) {
   return m;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -4,8 +4,10 @@
 #include <filesystem>
 
 #include <glm/mat4x4.hpp>
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 struct LightMatrices {
   glm::mat4 view{1.0f};       // identity when the file gives only view_proj
@@ -16,4 +18,5 @@ struct LightMatrices {
 // malformed JSON, unknown or missing keys, and arrays that are not 16 finite numbers.
 LightMatrices read_light_matrices(const std::filesystem::path& path);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -8,8 +8,10 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/cli_common.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -88,4 +90,5 @@ LookOverrides parse_look(const LookArgs& args) {
   return o;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

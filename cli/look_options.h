@@ -5,12 +5,14 @@
 #include <string>
 
 #include "scenes/look.h"
+#include "raster/simd/isa.h"
 
 namespace CLI {
 class App;
-}
+}  // namespace CLI
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 struct LookArgs {
   std::string exposure, tonemap, background;  // as given; empty: the scene's
@@ -28,4 +30,5 @@ struct LookOverrides {
 // -64..64; --tonemap a name; --background a name, R,G,B or R,G,B,R,G,B (top, then bottom), linear in [0, 1].
 LookOverrides parse_look(const LookArgs& args);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -1,77 +1,68 @@
-// shadowlab's entry point: builds the command-line parser from the per-command files, runs the chosen command,
-// and is the one place where errors become `shadowlab: error: WHERE: what is wrong` and exit code 2.
+// shadowlab's entry point: picks the instruction set the pipeline runs on, once, before anything else, and hands
+// the command line to that build of it (cli/run.cpp, compiled once per set in SHADOWLAB_ISAS: see
+// raster/simd/isa.h). The widest set the CPU and the operating system support is taken; the environment
+// variable SHADOWLAB_ISA=avx2|scalar|auto forces one. Every set gives bit-identical output
+// (tests/cli/isa_dispatch_test.cpp), so the choice changes only the speed. This file is built for plain x86-64
+// whatever the sets are: it must run on any CPU to tell it apart.
 #include <cstdio>
-#include <exception>
-#include <new>
-#include <string>
-#include <vector>
+#include <cstdlib>
+#include <cstring>
 
-#include <CLI/CLI.hpp>
-
-#include "cli/cli_common.h"
-#include "cli/json_output.h"
-#include "raster/renderer.h"
-#include "raster/target.h"
-#include "scenes/io/io_error.h"
-#include "scenes/reference/occlusion_scene.h"
-#include "scenes/scene_error.h"
+// One declaration per set built (CMake defines SHADOWLAB_HAVE_ISA_<SET>); the definitions are cli/run.cpp's
+// `cli::run` in the set's namespace.
+#if defined(SHADOWLAB_HAVE_ISA_AVX2)
+namespace cli::isa_avx2 {
+int run(int argc, char** argv);
+}
+#endif
+#if defined(SHADOWLAB_HAVE_ISA_SCALAR)
+namespace cli::isa_scalar {
+int run(int argc, char** argv);
+}
+#endif
 
 namespace {
 
 constexpr int kExitBadInput = 2;
 
-// Prints exactly one line: newlines inside a library's message are folded into spaces.
-int report(const std::string& message) {
-  std::string line = message;
-  for (char& c : line)
-    if (c == '\n' || c == '\r') c = ' ';
-  while (!line.empty() && line.back() == ' ') line.pop_back();
-  std::fprintf(stderr, "shadowlab: error: %s\n", line.c_str());
+// Everything raster/simd/isa.h's AVX2 target enables. libgcc's check of "avx2" includes the operating system's
+// support for the 256-bit registers (XGETBV), so a hypervisor that hides them also hides AVX2 here.
+bool cpu_has_avx2() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
+         __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("lzcnt") && __builtin_cpu_supports("f16c");
+#else
+  return false;
+#endif
+}
+
+int fail(const char* what) {
+  std::fprintf(stderr, "shadowlab: error: SHADOWLAB_ISA: %s\n", what);
   return kExitBadInput;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"shadowlab: a CPU rasterizer that reproduces the GL pipeline for shadow-mapping research.",
-               "shadowlab"};
-  app.require_subcommand(1);
-  app.set_help_all_flag("--help-all", "Help for every command");
-  app.set_version_flag("--version", cli::version_line(), "Print the version, git revision and SIMD path, and exit");
-  std::vector<cli::Command> commands = {cli::add_render_command(app), cli::add_shadowmap_command(app),
-                                        cli::add_inspect_command(app), cli::add_diff_command(app),
-                                        cli::add_eval_command(app),    cli::add_eval_merge_command(app),
-                                        cli::add_list_command(app),    cli::add_render_merge_command(app),
-                                        cli::add_check_command(app),   cli::add_scene_command(app)};
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::Success& e) {
-    return app.exit(e);  // --help
-  } catch (const CLI::ParseError& e) {
-    return report(e.what());
-  }
+  const char* forced = std::getenv("SHADOWLAB_ISA");
+  if (forced != nullptr && *forced == '\0') forced = nullptr;
+  const bool want_auto = forced == nullptr || std::strcmp(forced, "auto") == 0;
+  if (!want_auto && std::strcmp(forced, "avx2") != 0 && std::strcmp(forced, "scalar") != 0)
+    return fail("unknown instruction set (expected avx2, scalar or auto)");
 
-  try {
-    for (const cli::Command& c : commands)
-      if (c.app->parsed()) return c.run();
-    return report("no command given (run shadowlab --help)");
-  } catch (const cli::CliError& e) {
-    return report(e.what());
-  } catch (const scenes::SceneError& e) {
-    return report(e.what());
-  } catch (const scenes::io::IoError& e) {
-    return report(e.what());
-  } catch (const reference::ReferenceError& e) {
-    return report(e.what());
-  } catch (const raster::TargetSizeError& e) {
-    return report(std::string("target size: ") + e.what());
-  } catch (const raster::DrawError& e) {
-    return report(std::string("draw: ") + e.what());
-  } catch (const std::invalid_argument& e) {  // frame::render_frame: the message names the option
-    return report(e.what());
-  } catch (const std::bad_alloc&) {
-    return report("out of memory");
-  } catch (const std::exception& e) {
-    return report(std::string("internal error: ") + e.what());
+  if (want_auto || std::strcmp(forced, "avx2") == 0) {
+#if defined(SHADOWLAB_HAVE_ISA_AVX2)
+    if (cpu_has_avx2()) return cli::isa_avx2::run(argc, argv);
+    if (!want_auto) return fail("avx2 was asked for, but this CPU lacks AVX2, FMA, BMI1/2, LZCNT or F16C");
+#else
+    if (!want_auto) return fail("avx2 was asked for, but this build has no AVX2 path (SHADOWLAB_ISAS)");
+#endif
   }
+#if defined(SHADOWLAB_HAVE_ISA_SCALAR)
+  return cli::isa_scalar::run(argc, argv);
+#else
+  if (!want_auto) return fail("scalar was asked for, but this build has no scalar path (SHADOWLAB_ISAS)");
+  return fail("this CPU lacks AVX2, the only instruction set this build has (SHADOWLAB_ISAS)");
+#endif
 }

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 MapStats map_stats(const scenes::io::ExrMap& map) {
   MapStats s;
@@ -62,4 +64,5 @@ raster::ColorTarget false_colour(const scenes::io::ExrMap& map, float lo, float 
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

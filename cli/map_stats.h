@@ -5,8 +5,10 @@
 
 #include "raster/target.h"
 #include "scenes/io/exr_map.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 struct MapStats {
   // Over every texel that is a number (min > max when there is none): a map of 12.5 everywhere has min 12.5.
@@ -27,4 +29,5 @@ inline constexpr const char* kPreviewColourMap = "viridis (dark purple = low, ye
 // target, ready for write_png.
 raster::ColorTarget false_colour(const scenes::io::ExrMap& map, float lo, float hi);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -5,11 +5,14 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 // Renders `args` (the words after `shadowlab render`: one scene and options) and returns the job as `render
 // --json` describes it (scene, name, frames with their outputs). Errors are CliErrors on `where`.
 nlohmann::json render_line(const std::vector<std::string>& args, const std::string& where);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -7,8 +7,10 @@
 
 #include "cli/cli_common.h"
 #include "scenes/builtin_scenes.h"
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -81,4 +83,5 @@ std::string expand_name(const std::string& pattern, const std::string& stem, int
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace cli

@@ -3,8 +3,10 @@
 // batches and image sequences write one file each: `out/{scene}.png`, `seq/frame_%04d.png`.
 #pragma once
 #include <string>
+#include "raster/simd/isa.h"
 
 namespace cli {
+SHADOWLAB_ISA_BEGIN
 
 // The scene part of file names for scene argument `scene` (a built-in name or a file path).
 std::string scene_stem(const std::string& scene);
@@ -18,4 +20,5 @@ bool has_scene_field(const std::string& pattern);
 // `pattern` with `{scene}` and the frame field filled in (`%%` becomes '%').
 std::string expand_name(const std::string& pattern, const std::string& stem, int frame);
 
+SHADOWLAB_ISA_END
 }  // namespace cli

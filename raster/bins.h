@@ -10,8 +10,10 @@
 
 #include "raster/limits.h"
 #include "raster/primitive.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 struct TileGrid {
   int tiles_x = 0, tiles_y = 0;
@@ -75,4 +77,5 @@ struct ChunkBins {
   std::vector<uint32_t> scratch_;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

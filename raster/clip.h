@@ -16,8 +16,10 @@
 #include "raster/primitive.h"
 #include "raster/setup.h"
 #include "raster/shader.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 template <class Varyings>
 struct ClipVertex {
@@ -178,4 +180,5 @@ int clip_to_window(const ClipPlanes& cp, unsigned planes_mask, const SetupParams
 // depth plane (setup.cpp), which llvmpipe computes from the vertices in the order it receives them.
 inline std::array<int, 3> clip_fan(int k) { return {k, k + 1, 0}; }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -10,8 +10,10 @@
 #include "raster/limits.h"
 #include "raster/primitive.h"
 #include "raster/simd/vec.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // Lanes [lo, hi] of an 8-lane row.
 inline unsigned lane_range_mask(int lo, int hi) { return ((2u << hi) - 1u) & ~((1u << lo) - 1u); }
@@ -194,4 +196,5 @@ inline void rasterize(const Tri& t, const PixelRect& r, const Stage& stage) {
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

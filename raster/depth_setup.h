@@ -6,8 +6,10 @@
 #include <cstdint>
 
 #include "raster/primitive.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // Whether setup's record fits a DepthSetup (its edges are narrow).
 inline bool fits_depth_setup(const TriangleSetup& t) { return (t.flags & kNarrowEdges) != 0; }
@@ -52,4 +54,5 @@ inline int32_t edge_value_narrow(const DepthSetup& d, int k, int32_t x, int32_t 
   return t;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -9,8 +9,10 @@
 #include "raster/primitive.h"
 #include "raster/simd/vec.h"
 #include "raster/target.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // Depth of the eight pixels (bx + l, y) on the triangle's plane, clamped to [0, 1]. Shared by every back end so
 // that a triangle gets the same depth whichever path draws it. llvmpipe's operation order (setup.cpp): with x and
@@ -122,4 +124,5 @@ struct DepthOnlyStage {
   }
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

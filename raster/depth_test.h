@@ -7,8 +7,10 @@
 #include "raster/formats.h"
 #include "raster/simd/vec.h"
 #include "raster/state.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 template <DepthFormat F>
 struct DepthTraits;
@@ -136,4 +138,5 @@ decltype(auto) dispatch_depth_format(DepthFormat format, F&& f) {
   return f.template operator()<DepthFormat::d32f>();
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

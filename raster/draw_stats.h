@@ -1,8 +1,10 @@
 // What one draw did, counted per stage: useful for --stats and for tests that check culling and clipping.
 #pragma once
 #include <cstdint>
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 struct DrawStats {
   uint64_t triangles = 0;         // submitted
@@ -19,4 +21,5 @@ struct DrawStats {
   }
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

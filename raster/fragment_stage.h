@@ -16,8 +16,10 @@
 #include "raster/simd/vec.h"
 #include "raster/state.h"
 #include "raster/target.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // Scalar depth conversion and load of one pixel, the same as the SIMD path's (the comparison: DepthCompare::test).
 template <DepthFormat Format>
@@ -295,4 +297,5 @@ struct ShadedStage {
   }
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

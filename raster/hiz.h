@@ -11,8 +11,10 @@
 #include "raster/primitive.h"
 #include "raster/simd/vec.h"
 #include "raster/target.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 class TileHiZ {
  public:
@@ -82,4 +84,5 @@ inline HiZPlane make_hiz_plane(const Tri& t, const PixelRect& r) {
   return p;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -11,8 +11,10 @@
 #include "raster/primitive.h"
 #include "raster/shader.h"
 #include "raster/simd/vec.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 template <class V>
 struct TriangleInterp {
@@ -124,4 +126,5 @@ struct PairInterp {
   }
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

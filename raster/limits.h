@@ -4,8 +4,10 @@
 #pragma once
 #include <cstdint>
 #include <limits>
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // Sub-pixel precision (CONVENTIONS): window positions are snapped to 1/256 pixel.
 inline constexpr int kSubpixelBits = 8;
@@ -73,4 +75,5 @@ static_assert(kMaxTargetSize % kTileSize == 0 && kTileSize % kBlockSize == 0);
 // Bounding boxes are stored as int32 pixel indices (int16 in DepthSetup, asserted above); tile indices as uint16.
 static_assert(kMaxTargetSize / kTileSize <= 65535);
 
+SHADOWLAB_ISA_END
 }  // namespace raster

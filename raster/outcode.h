@@ -5,8 +5,10 @@
 
 #include "raster/clip.h"
 #include "raster/simd/vec.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 class OutcodeTester {
  public:
@@ -43,4 +45,5 @@ class OutcodeTester {
   simd::VecF32 nx_, ny_, nz_, nw_, bias_;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -3,8 +3,10 @@
 // execution (the full one, and the one-cache-line one of depth-only draws).
 #pragma once
 #include <cstdint>
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // A vertex after the perspective divide and viewport transform (CONVENTIONS: float maths, FMA), and its
 // position snapped to 1/256 pixel.
@@ -58,4 +60,5 @@ static_assert(sizeof(DepthSetup) == 64);
 
 inline constexpr uint32_t kNoFullSetup = ~0u;
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -11,8 +11,10 @@
 #include <glm/vec4.hpp>
 
 #include "raster/simd/vec.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // Number of floats in a shader's Varyings (0 for an empty struct).
 template <class V>
@@ -105,4 +107,5 @@ inline simd::VecF32 dfdy_coarse(simd::VecF32 v) {
   return pair_detail::diff(v, pair_detail::lanes(4, 6, 4, 6), pair_detail::lanes(0, 2, 0, 2));
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -5,8 +5,10 @@
 
 #include "raster/quad.h"
 #include "raster/shader.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 template <class S>
 struct QuadPathOnly {
@@ -19,4 +21,5 @@ struct QuadPathOnly {
   void fragment(const QuadIn<Varyings>& q, QuadOut& out) const { shader.fragment(q, out); }
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -2,8 +2,10 @@
 #include "raster/renderer.h"
 
 #include <string>
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 void Renderer::clear_tiles(DepthTarget& depth, uint32_t raw) {
   const TileGrid grid = TileGrid::for_size(depth.width(), depth.height());
@@ -13,9 +15,7 @@ void Renderer::clear_tiles(DepthTarget& depth, uint32_t raw) {
   });
 }
 
-}  // namespace raster
-
-namespace raster::detail {
+namespace detail {
 
 void check_draw(const RenderTargets& t, const DrawState& s, size_t vertices, size_t indices) {
   if (!t.depth && !t.color) throw DrawError("draw has no render target");
@@ -32,4 +32,7 @@ void check_draw(const RenderTargets& t, const DrawState& s, size_t vertices, siz
     throw DrawError("non-indexed vertex count " + std::to_string(vertices) + " is not a multiple of 3");
 }
 
-}  // namespace raster::detail
+}  // namespace detail
+
+SHADOWLAB_ISA_END
+}  // namespace raster

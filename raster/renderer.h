@@ -33,8 +33,10 @@
 #include "raster/target.h"
 #include "raster/thread_pool.h"
 #include "raster/vertex_batch.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // What a draw renders into. Either may be null; when both are set they must have the same size.
 struct RenderTargets {
@@ -429,4 +431,5 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   return stats;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -5,8 +5,10 @@
 #include <cstring>
 #include <memory>
 #include <type_traits>
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // An uninitialised, growable array of bytes viewed as trivially copyable T.
 class ScratchBuffer {
@@ -48,4 +50,5 @@ class ScratchBuffer {
   size_t capacity_ = 0;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

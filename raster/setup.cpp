@@ -9,8 +9,10 @@
 #include <cstdlib>
 
 #include "raster/limits.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 SetupParams make_setup_params(const DrawState& s, int tw, int th, DepthFormat format) {
   // GL's viewport limits (glViewport clamps; llvmpipe: GL_MAX_VIEWPORT_DIMS 16384, bounds [-32768, 32767]),
@@ -164,4 +166,5 @@ SetupResult setup_triangle(const WindowVertex& v0, const WindowVertex& v1, const
   return SetupResult::visible;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

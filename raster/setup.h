@@ -11,8 +11,10 @@
 #include "raster/limits.h"
 #include "raster/primitive.h"
 #include "raster/state.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // The per-draw constants setup needs, derived once from the DrawState snapshot.
 struct SetupParams {
@@ -55,4 +57,5 @@ SetupResult setup_triangle(const WindowVertex& v0, const WindowVertex& v1, const
 // 2 codes for d16 and d24; for d32f 2^(e − 23) with e the exponent of the largest depth of the triangle.
 float polygon_offset_r(DepthFormat format, float max_depth);
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -13,8 +13,10 @@
 #include "raster/primitive.h"
 #include "raster/setup.h"
 #include "raster/simd/vec.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // ---- Why int32 is exact here ---------------------------------------------------------------------------------
 // A lane is set up in SIMD when its snapped extent is below 2^kBatchExtentBits sub-pixel units in x and in y
@@ -208,4 +210,5 @@ inline void SetupBatch::run() {
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -26,8 +26,10 @@
 #include <glm/vec4.hpp>
 
 #include "raster/quad.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // Varyings of a shader that passes nothing to the fragment stage.
 struct NoVaryings {};
@@ -68,4 +70,5 @@ struct ClipSpaceDepthShader {
   glm::vec4 vertex(const Vertex& v, Varyings&) const { return v; }
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

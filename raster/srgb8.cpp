@@ -6,8 +6,10 @@
 #include <cmath>
 
 #include "raster/target.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 uint8_t srgb8_reference(float linear) {
   const float v = srgb_encode(std::clamp(linear, 0.0f, 1.0f));
@@ -33,4 +35,5 @@ Srgb8Encoder::Srgb8Encoder() {
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

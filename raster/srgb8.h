@@ -8,8 +8,10 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 class Srgb8Encoder {
  public:
@@ -36,4 +38,5 @@ class Srgb8Encoder {
 // write()'s byte for one channel of an sRGB target, computed as write() does (srgb_encode and round).
 uint8_t srgb8_reference(float linear);
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -13,8 +13,10 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 AlignedBuffer::AlignedBuffer(size_t bytes) : size_(bytes) {
   // Buffers of 2 MiB and more are aligned to 2 MiB and offered to the kernel as transparent huge pages: zeroing
@@ -182,4 +184,5 @@ glm::vec4 ColorTarget::read(int x, int y) const {
   return c;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -17,8 +17,10 @@
 #include <glm/vec4.hpp>
 
 #include "raster/formats.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 // GL's sRGB transfer functions (exact formulas of the sRGB standard, in float).
 float srgb_encode(float linear);
@@ -172,4 +174,5 @@ class ColorTarget {
 // "width 0 is outside 1..16384" when it is out of range.
 void check_target_size(int width, int height);
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -9,8 +9,10 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 struct ThreadPool::Impl {
   // More threads than cores is allowed (a user oversubscribing on purpose): oneTBB's worker limit, by default
@@ -47,4 +49,5 @@ void ThreadPool::parallel_for(size_t n, const std::function<void(size_t)>& fn) {
   });
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster

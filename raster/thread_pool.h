@@ -5,8 +5,10 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 class ThreadPool {
  public:
@@ -32,4 +34,5 @@ class ThreadPool {
 // The hardware's thread count (at least 1).
 int hardware_threads();
 
+SHADOWLAB_ISA_END
 }  // namespace raster

@@ -11,8 +11,10 @@
 #include "raster/primitive.h"
 #include "raster/setup.h"
 #include "raster/simd/vec.h"
+#include "raster/simd/isa.h"
 
 namespace raster {
+SHADOWLAB_ISA_BEGIN
 
 class VertexBatch {
  public:
@@ -75,4 +77,5 @@ class VertexBatch {
   unsigned invalid_;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace raster

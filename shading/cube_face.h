@@ -11,8 +11,10 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // GL's face order (GL_TEXTURE_CUBE_MAP_POSITIVE_X + face).
 enum class CubeFace : uint8_t { pos_x, neg_x, pos_y, neg_y, pos_z, neg_z };
@@ -108,4 +110,5 @@ inline glm::mat4 cube_face_view(int face, glm::vec3 eye) {
   return glm::lookAt(eye, eye + glm::vec3(a.major), glm::vec3(a.t_axis));
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

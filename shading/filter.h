@@ -9,8 +9,10 @@
 #include "shading/texel_format.h"
 #include "shading/texture.h"
 #include "shading/wrap.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // Taps in the order (i0, j0), (i1, j0), (i0, j1), (i1, j1); a null row means the border colour. `a` weights
 // taps 1 and 3 against 0 and 2 (along s), `b` taps 2 and 3 against 0 and 1 (along t). `missing` names a tap
@@ -121,4 +123,5 @@ inline float compare_reference(TexelFormat f, float ref) {
   return ref > 0.0f ? (ref < 1.0f ? ref : 1.0f) : 0.0f;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

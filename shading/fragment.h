@@ -11,8 +11,10 @@
 #include <glm/vec4.hpp>
 
 #include "raster/quad.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // One value per lane, lanes ordered as in raster/quad.h: 0 = (x, y), 1 = (x+1, y), 2 = (x, y+1), 3 = (x+1, y+1).
 template <class T>
@@ -75,4 +77,5 @@ inline void discard(raster::QuadOut& out, int lane) { out.discard = uint8_t(out.
 // gl_FragDepth for one lane (the shader must declare kWritesDepth).
 inline void write_depth(raster::QuadOut& out, int lane, float z) { out.depth[size_t(lane)] = z; }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

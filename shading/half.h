@@ -1,14 +1,16 @@
 // IEEE binary16 ("half") conversions for RGBA16F textures: decode on every tap, encode when a texture is filled
-// or a mip level is generated. Uses F16C when the build enables it, with an exact scalar twin otherwise.
+// or a mip level is generated. Uses F16C on the AVX2 path (raster/simd/isa.h), with an exact scalar twin otherwise.
 #pragma once
 #include <bit>
 #include <cstdint>
 
-#if defined(__F16C__)
+#if defined(SHADOWLAB_SIMD_AVX2)
 #include <immintrin.h>
 #endif
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // The scalar twins, always compiled (tests hold them to the F16C instructions).
 // Exact: every half value is a float value.
@@ -45,7 +47,7 @@ inline uint16_t float_to_half_soft(float f) {
 }
 
 inline float half_to_float(uint16_t h) {
-#if defined(__F16C__)
+#if defined(SHADOWLAB_SIMD_AVX2)
   return _cvtsh_ss(h);
 #else
   return half_to_float_soft(h);
@@ -53,11 +55,12 @@ inline float half_to_float(uint16_t h) {
 }
 
 inline uint16_t float_to_half(float f) {
-#if defined(__F16C__)
+#if defined(SHADOWLAB_SIMD_AVX2)
   return uint16_t(_cvtss_sh(f, _MM_FROUND_TO_NEAREST_INT));
 #else
   return float_to_half_soft(f);
 #endif
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -15,8 +15,10 @@
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 enum class LightType : uint8_t { directional, point, spot };
 
@@ -133,4 +135,5 @@ inline glm::vec3 shade(const Material& m, const Light& light, glm::vec3 p, glm::
   return ambient_light(m, ls) + shadow * (d.diffuse + d.specular);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

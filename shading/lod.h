@@ -9,8 +9,10 @@
 #include <glm/vec2.hpp>
 
 #include "shading/sampler.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // λ_base = log2(ρ), ρ = max(|(∂u/∂x, ∂v/∂x)|, |(∂u/∂y, ∂v/∂y)|) with u = s · W, v = t · H at level 0.
 // A zero gradient gives −∞ (magnification); an infinite or NaN ρ is taken as 0, as llvmpipe does.
@@ -49,4 +51,5 @@ inline LevelChoice choose_levels(float lambda_base, const Sampler& s, int levels
   return {int(fl), int(fl) + 1, frac, s.min_filter};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

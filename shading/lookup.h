@@ -16,8 +16,10 @@
 #include "shading/pcf_kernel.h"
 #include "shading/sampler.h"
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 namespace detail {
 
@@ -220,4 +222,5 @@ inline Quad<float> texture_proj(const Texture2D& t, const Sampler& s, const Quad
   return r;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -13,8 +13,10 @@
 #include "shading/fragment.h"
 #include "shading/lod.h"
 #include "shading/texture_cube.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // The footprint of face coordinates (c.s, c.t) on `level` of the cube.
 inline Footprint footprint_cube(const TextureCube& cube, int level, const Sampler& s, Filter filter,
@@ -167,4 +169,5 @@ inline Quad<float> texture(const TextureCube& cube, const Sampler& s, const Quad
   return r;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -7,8 +7,10 @@
 #include <vector>
 
 #include <glm/vec4.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -87,4 +89,5 @@ void box_downsample(TexelFormat format, const std::byte* src, size_t src_row_byt
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

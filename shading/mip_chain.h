@@ -6,8 +6,10 @@
 #include <cstddef>
 
 #include "shading/texel_format.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // 16384 = 2^14 texels per side (raster::kMaxTargetSize) gives 15 levels.
 inline constexpr int kMaxTextureSize = 16384;
@@ -29,4 +31,5 @@ constexpr int mip_level_count(int width, int height) { return int(std::bit_width
 void box_downsample(TexelFormat format, const std::byte* src, size_t src_row_bytes, int sw, int sh, std::byte* dst,
                     size_t dst_row_bytes, int dw, int dh);
 
+SHADOWLAB_ISA_END
 }  // namespace shading

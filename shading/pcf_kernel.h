@@ -26,8 +26,11 @@
 #if defined(SHADOWLAB_SIMD_AVX2)
 #include <immintrin.h>
 #endif
+#include "raster/simd/isa.h"
 
-namespace shading::detail {
+namespace shading {
+SHADOWLAB_ISA_BEGIN
+namespace detail {
 
 // 1 where ref <= texel, else 0, without a branch: the same values as compare_ref(lequal, …).
 inline float le_one(float ref, float texel) {
@@ -415,4 +418,6 @@ inline void pcf_lequal_many(const TextureLevel& L, const glm::vec3* p, float* ou
   for (; k < n; ++k) out[k] = pcf_lequal<F, kBorderWrap>(L, p[k], border_depth);
 }
 
-}  // namespace shading::detail
+}  // namespace detail
+SHADOWLAB_ISA_END
+}  // namespace shading

@@ -9,8 +9,10 @@
 #include <glm/vec4.hpp>
 
 #include "raster/state.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 enum class Filter : uint8_t { nearest, linear };
 // none: only level 0 (GL's NEAREST / LINEAR minification); nearest, linear: GL's *_MIPMAP_NEAREST / _LINEAR.
@@ -96,4 +98,5 @@ inline float compare_ref(CompareFunc f, float ref, float texel) {
   return r ? 1.0f : 0.0f;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -15,8 +15,10 @@
 
 #include "shading/lookup.h"
 #include "shading/pcf_kernel.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // A lookup specialised at compile time: one fast path (format and wrap fixed), ...
 template <TexelFormat F, bool kBorderWrap>
@@ -161,4 +163,5 @@ inline void texture_many(const Texture2D& t, const Sampler& s, std::span<const g
   for (size_t k = 0; k < st.size(); ++k) out[k] = texture(t, s, st[k]);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

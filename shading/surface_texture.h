@@ -14,8 +14,10 @@
 #include "shading/lookup.h"
 #include "shading/sampler.h"
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 struct SurfaceTexture {
   const Texture2D* texture = nullptr;  // null: the factor alone
@@ -54,4 +56,5 @@ struct SurfaceTexture {
   bool discarded_at(glm::vec2 st) const { return masked && !(color_at(st).a >= cutoff); }
 };
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -2,8 +2,10 @@
 #include "shading/texel_format.h"
 
 #include <bit>
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }  // NaN -> 0
@@ -45,4 +47,5 @@ void encode_texel(TexelFormat f, std::byte* row, int i, const glm::vec4& v) {
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

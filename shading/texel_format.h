@@ -17,8 +17,10 @@
 #include "raster/formats.h"
 #include "raster/target.h"
 #include "shading/half.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // d16, d24, d32f: the depth formats of CONVENTIONS, sampled as a float in [0, 1] (code / max code for d16, d24).
 // r32f, rg32f, rgba16f, rgba32f: float colour. rgba8: unorm. rgba8_srgb: unorm, sRGB-decoded on every tap
@@ -225,4 +227,5 @@ inline glm::vec4 decode_texel(TexelFormat f, const std::byte* row, int i) {
 // even, floats stored as they are.
 void encode_texel(TexelFormat f, std::byte* row, int i, const glm::vec4& v);
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -3,8 +3,10 @@
 
 #include <stdexcept>
 #include <string>
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -153,4 +155,5 @@ void Texture2D::generate_mips() {
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -13,8 +13,10 @@
 #include "raster/target.h"
 #include "shading/mip_chain.h"
 #include "shading/texel_format.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 // One mip level as lookups see it: plain data, no behaviour beyond addressing.
 struct TextureLevel {
@@ -81,4 +83,5 @@ class Texture2D {
   std::shared_ptr<raster::AlignedBuffer> storage_;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -3,8 +3,10 @@
 
 #include <stdexcept>
 #include <string>
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 TextureCube::TextureCube(int size, TexelFormat format, bool mipmaps) {
   for (auto& f : faces_) f = Texture2D(size, size, format, mipmaps);
@@ -29,4 +31,5 @@ void TextureCube::generate_mips() {
   for (auto& f : faces_) f.generate_mips();
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -5,8 +5,10 @@
 
 #include "shading/cube_face.h"
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 class TextureCube {
  public:
@@ -33,4 +35,5 @@ class TextureCube {
   std::array<Texture2D, 6> faces_;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace shading

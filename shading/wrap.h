@@ -6,8 +6,10 @@
 #include <cmath>
 
 #include "shading/sampler.h"
+#include "raster/simd/isa.h"
 
 namespace shading {
+SHADOWLAB_ISA_BEGIN
 
 inline constexpr int kBorder = -1;
 
@@ -68,4 +70,5 @@ inline LinearAxis linear_axis(Wrap w, float s, float size, int n, int offset = 0
   return {wrap_index(w, i, n), wrap_index(w, i + 1, n), u - fl};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading

@@ -8,7 +8,10 @@
 #else
 #include "raster/simd/vec_scalar.h"
 #endif
+#include "raster/simd/isa.h"
 
 namespace raster::simd {
+SHADOWLAB_ISA_BEGIN
 inline constexpr int kLanes = 8;
-}
+SHADOWLAB_ISA_END
+}  // namespace raster::simd

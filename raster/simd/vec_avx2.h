@@ -1,11 +1,14 @@
 // AVX2 implementation of the eight-lane value types (see vec.h). Every function is a thin, named wrapper of
-// one or two intrinsics, so the stage code reads like the maths.
+// one or two intrinsics, so the stage code reads like the maths. The operators are free functions, not friends
+// defined in the class: GCC does not apply raster/simd/isa.h's target pragma to a friend defined in a class.
 #pragma once
 #include <immintrin.h>
 
 #include <cstdint>
+#include "raster/simd/isa.h"
 
 namespace raster::simd {
+SHADOWLAB_ISA_BEGIN
 
 struct VecI32 {
   __m256i v;
@@ -23,12 +26,12 @@ struct VecI32 {
     const __m256i ordered = _mm256_permute4x64_epi64(packed, 0x08);
     _mm_storeu_si128(reinterpret_cast<__m128i*>(p), _mm256_castsi256_si128(ordered));
   }
-  friend VecI32 operator+(VecI32 a, VecI32 b) { return {_mm256_add_epi32(a.v, b.v)}; }
-  friend VecI32 operator-(VecI32 a, VecI32 b) { return {_mm256_sub_epi32(a.v, b.v)}; }
-  friend VecI32 operator*(VecI32 a, VecI32 b) { return {_mm256_mullo_epi32(a.v, b.v)}; }
-  friend VecI32 operator|(VecI32 a, VecI32 b) { return {_mm256_or_si256(a.v, b.v)}; }
-  friend VecI32 operator&(VecI32 a, VecI32 b) { return {_mm256_and_si256(a.v, b.v)}; }
 };
+inline VecI32 operator+(VecI32 a, VecI32 b) { return {_mm256_add_epi32(a.v, b.v)}; }
+inline VecI32 operator-(VecI32 a, VecI32 b) { return {_mm256_sub_epi32(a.v, b.v)}; }
+inline VecI32 operator*(VecI32 a, VecI32 b) { return {_mm256_mullo_epi32(a.v, b.v)}; }
+inline VecI32 operator|(VecI32 a, VecI32 b) { return {_mm256_or_si256(a.v, b.v)}; }
+inline VecI32 operator&(VecI32 a, VecI32 b) { return {_mm256_and_si256(a.v, b.v)}; }
 
 struct VecF32 {
   __m256 v;
@@ -36,10 +39,10 @@ struct VecF32 {
   static VecF32 iota() { return {_mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7)}; }
   static VecF32 load(const float* p) { return {_mm256_loadu_ps(p)}; }
   void store(float* p) const { _mm256_storeu_ps(p, v); }
-  friend VecF32 operator+(VecF32 a, VecF32 b) { return {_mm256_add_ps(a.v, b.v)}; }
-  friend VecF32 operator-(VecF32 a, VecF32 b) { return {_mm256_sub_ps(a.v, b.v)}; }
-  friend VecF32 operator*(VecF32 a, VecF32 b) { return {_mm256_mul_ps(a.v, b.v)}; }
 };
+inline VecF32 operator+(VecF32 a, VecF32 b) { return {_mm256_add_ps(a.v, b.v)}; }
+inline VecF32 operator-(VecF32 a, VecF32 b) { return {_mm256_sub_ps(a.v, b.v)}; }
+inline VecF32 operator*(VecF32 a, VecF32 b) { return {_mm256_mul_ps(a.v, b.v)}; }
 
 // a · b + c with a single rounding.
 inline VecF32 fma(VecF32 a, VecF32 b, VecF32 c) { return {_mm256_fmadd_ps(a.v, b.v, c.v)}; }
@@ -62,11 +65,11 @@ struct Mask {
   }
   unsigned bits() const { return unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(v))); }
   bool any() const { return !_mm256_testz_si256(v, v); }
-  friend Mask operator&(Mask a, Mask b) { return {_mm256_and_si256(a.v, b.v)}; }
-  friend Mask operator|(Mask a, Mask b) { return {_mm256_or_si256(a.v, b.v)}; }
-  // a and not b
-  friend Mask and_not(Mask a, Mask b) { return {_mm256_andnot_si256(b.v, a.v)}; }
 };
+inline Mask operator&(Mask a, Mask b) { return {_mm256_and_si256(a.v, b.v)}; }
+inline Mask operator|(Mask a, Mask b) { return {_mm256_or_si256(a.v, b.v)}; }
+// a and not b
+inline Mask and_not(Mask a, Mask b) { return {_mm256_andnot_si256(b.v, a.v)}; }
 
 // Lanes whose value is negative.
 inline Mask negative(VecI32 a) { return {_mm256_srai_epi32(a.v, 31)}; }
@@ -191,4 +194,5 @@ inline void transpose8(VecF32 (&r)[8]) {
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster::simd

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include "raster/simd/isa.h"
 
 namespace raster::simd {
+SHADOWLAB_ISA_BEGIN
 
 struct VecI32 {
   alignas(32) int32_t v[8];
@@ -124,4 +126,5 @@ inline void transpose8(VecF32 (&r)[8]) {
   for (int i = 0; i < 8; ++i) r[i] = o[i];
 }
 
+SHADOWLAB_ISA_END
 }  // namespace raster::simd

@@ -6,8 +6,10 @@
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -140,4 +142,5 @@ raster::ColorTarget aliasing_heat_map(const AliasingImage& img) {
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -14,8 +14,10 @@
 #include "raster/target.h"
 #include "scenes/frame/camera_shader.h"
 #include "scenes/scene.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 // One light's measure over the frame: `ratio` per pixel (row-major, row 0 at the bottom); kUnmeasured where
 // the pixel faces away from the light or the technique has no measure there, kEmpty where nothing is drawn.
@@ -43,4 +45,5 @@ std::vector<AliasingImage> measure_aliasing(const scenes::Scene& scene, const gl
 // yellow (2) to red (8 and above); dark grey where nothing was measured, black where the frame is empty.
 raster::ColorTarget aliasing_heat_map(const AliasingImage& image);
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -21,8 +21,10 @@
 #include "shading/lighting.h"
 #include "shading/surface_texture.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 struct CameraVertex {
   glm::vec3 position;  // model space
@@ -245,4 +247,5 @@ struct BasicCameraShader {
 
 using CameraShader = BasicCameraShader<false>;
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -7,8 +7,10 @@
 #include "raster/target.h"
 #include "scenes/frame/surface_record.h"
 #include "scenes/scene_queries.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 std::vector<CameraVertex> camera_vertices(const scenes::Mesh& m) {
   std::vector<CameraVertex> v(m.positions.size());
@@ -83,4 +85,5 @@ shading::tech::CameraSurface camera_surface(const scenes::Scene& scene,
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace frame

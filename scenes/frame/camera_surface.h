@@ -15,8 +15,10 @@
 #include "scenes/scene.h"
 #include "shading/surface_texture.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 // A mesh's vertices as the camera shader reads them (a missing normal reads as +y).
 std::vector<CameraVertex> camera_vertices(const scenes::Mesh& mesh);
@@ -37,4 +39,5 @@ shading::tech::CameraSurface camera_surface(const scenes::Scene& scene,
                                             const glm::mat4& view_proj, glm::vec3 eye, int width, int height,
                                             raster::Renderer& renderer);
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -13,8 +13,10 @@
 #include <vector>
 
 #include "raster/srgb8.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 float highlight_limit(shading::ToneMap tone_map) {
   float lo = 0.0f, hi = 1000.0f;  // every operator is monotonic in grey and reaches 0.95 below 1000
@@ -168,4 +170,5 @@ void develop_into(raster::ColorTarget& out, const raster::ColorTarget& radiance,
   });
 }
 
+SHADOWLAB_ISA_END
 }  // namespace frame

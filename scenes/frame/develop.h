@@ -6,8 +6,10 @@
 #include "raster/target.h"
 #include "raster/thread_pool.h"
 #include "scenes/look.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 // The automatic exposure: the EV100 that takes the log-average luminance of the drawn pixels (alpha > 0,
 // luminance > 0) to 0.18 (middle grey) before the tone map, raised where needed so that the 99th percentile of
@@ -32,4 +34,5 @@ raster::ColorTarget develop(const raster::ColorTarget& radiance, float ev100, sh
 void develop_into(raster::ColorTarget& out, const raster::ColorTarget& radiance, float ev100,
                   shading::ToneMap tone_map, const scenes::Background& background, raster::ThreadPool& pool);
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -23,8 +23,10 @@
 #include "scenes/scene_queries.h"
 #include "shading/techniques/depth_pass.h"
 #include "shading/techniques/view_frustum.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -338,4 +340,5 @@ std::vector<NamedMap> export_maps(const Frame& frame) {
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace frame

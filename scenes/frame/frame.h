@@ -25,8 +25,10 @@
 #include "scenes/look.h"
 #include "scenes/scene.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 namespace tech = shading::tech;
 
@@ -114,4 +116,5 @@ struct NamedMap {
 // Every map of every light, in light order (the projective casters last).
 std::vector<NamedMap> export_maps(const Frame& frame);
 
+SHADOWLAB_ISA_END
 }  // namespace frame

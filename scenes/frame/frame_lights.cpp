@@ -9,8 +9,10 @@
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 std::string name_stem(const std::string& prefix, const std::string& name) {
   std::string part;
@@ -133,4 +135,5 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
   return r;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -7,8 +7,10 @@
 #include "scenes/frame/frame.h"
 #include "scenes/scene_queries.h"
 #include "shading/lighting.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 // A file-name part for `prefix` + "-" + `name`: characters other than letters, digits, '-' and '_' become '-',
 // and an empty (or all-punctuation) name adds nothing, so a stem never ends in '-' ("light0", "light1-sun").
@@ -32,4 +34,5 @@ float ambient_illuminance(const scenes::Light& light, const scenes::Aabb& bounds
 // place in the scene, for messages naming lights[index].
 ResolvedLight resolve_light(const scenes::Light& light, size_t index, const FrameConfig& config);
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -17,8 +17,10 @@
 #include "scenes/frame/frame.h"
 #include "shading/techniques/fade_table.h"
 #include "shading/techniques/tutorial_fit.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 namespace tech = shading::tech;
 
@@ -292,4 +294,5 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const P
   return pf;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace frame

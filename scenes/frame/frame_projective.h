@@ -18,8 +18,10 @@
 #include "shading/techniques/projective_cache.h"
 #include "shading/techniques/projective_lookup.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 // What the projective technique did in one frame.
 struct ProjectiveStats {
@@ -102,4 +104,5 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const P
 raster::Rect shadow_scissor(const shading::tech::CasterFrustum& f, const shading::tech::Box& box,
                             const ProjectiveView& view);
 
+SHADOWLAB_ISA_END
 }  // namespace frame

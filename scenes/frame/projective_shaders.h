@@ -19,8 +19,10 @@
 #include "scenes/frame/surface_record.h"
 #include "raster/renderer.h"
 #include "shading/techniques/projective_lookup.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 template <class Varyings>
 shading::Quad<glm::vec3> world_positions(const raster::QuadIn<Varyings>& q) {
@@ -132,4 +134,5 @@ raster::DrawStats draw_receiver(raster::Renderer& renderer, raster::RenderTarget
   return stats;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -2,8 +2,10 @@
 #include "scenes/frame/surface_record.h"
 
 #include <iterator>
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 SurfaceRecord::SurfaceRecord(int w, int h, size_t light_count)
     : width(w),
@@ -52,4 +54,5 @@ scenes::io::ExrImage aov_image(const SurfaceRecord& r, const std::vector<AovChan
   return img;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -13,8 +13,10 @@
 #include <glm/vec3.hpp>
 
 #include "scenes/io/exr_image.h"
+#include "raster/simd/isa.h"
 
 namespace frame {
+SHADOWLAB_ISA_BEGIN
 
 struct SurfaceRecord {
   int width = 0, height = 0;
@@ -58,4 +60,5 @@ std::optional<AovChannel> parse_aov_channel(std::string_view name);
 // lit-facing), and always `A` (1 where covered). Uncovered pixels hold 0 (V: 1).
 scenes::io::ExrImage aov_image(const SurfaceRecord& record, const std::vector<AovChannel>& channels);
 
+SHADOWLAB_ISA_END
 }  // namespace frame

@@ -12,8 +12,10 @@
 #include <system_error>
 
 #include "scenes/io/io_error.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -132,4 +134,5 @@ void write_atomically(const std::filesystem::path& path,
   batch.commit();
 }
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -5,8 +5,10 @@
 #include <filesystem>
 #include <functional>
 #include <vector>
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 // Calls write(temporary path), then renames the temporary file to `path`. Temporary files are named
 // `.STEM.tmp-PID-N.EXT`; ones left beside `path` by a process that no longer runs (a killed run) are removed
@@ -44,4 +46,5 @@ class WriteBatch {
 // reason. For writers that encode to memory first (PNG), so no failure can go unseen.
 void write_bytes(const std::filesystem::path& path, const void* bytes, size_t size);
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -12,8 +12,10 @@
 #include <OpenEXR/ImfHeader.h>
 
 #include "scenes/io/io_error.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -115,4 +117,5 @@ void check_exr_header(const std::filesystem::path& path) {
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -13,8 +13,10 @@
 
 #include "scenes/io/atomic_write.h"
 #include "scenes/io/io_error.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -112,4 +114,5 @@ ExrImage read_exr_image(const std::filesystem::path& path) {
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -5,8 +5,10 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 struct ExrChannel {
   std::string name;
@@ -30,4 +32,5 @@ void write_exr_image(WriteBatch& batch, const std::filesystem::path& path, const
 // Reads every channel of an EXR file as floats. Throws IoError naming `path`.
 ExrImage read_exr_image(const std::filesystem::path& path);
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -22,8 +22,10 @@
 #include "scenes/io/atomic_write.h"
 #include "scenes/io/exr_header.h"
 #include "scenes/io/io_error.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -222,4 +224,5 @@ std::vector<std::string> exr_channel_names(const std::filesystem::path& path) {
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

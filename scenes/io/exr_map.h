@@ -22,8 +22,10 @@
 #include "raster/state.h"
 #include "raster/target.h"
 #include "scenes/io/atomic_write.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 struct MapPass {
   std::string label;
@@ -71,4 +73,5 @@ ExrMap read_exr_map(const std::filesystem::path& path, const std::string& channe
 // The channel names of an EXR file, in the file's (alphabetical) order. Throws IoError.
 std::vector<std::string> exr_channel_names(const std::filesystem::path& path);
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -4,8 +4,10 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 class IoError : public std::runtime_error {
  public:
@@ -20,4 +22,5 @@ class IoError : public std::runtime_error {
   std::string reason_;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -17,8 +17,10 @@
 #include <vector>
 
 #include "scenes/io/io_error.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -173,4 +175,5 @@ shading::Texture2D load_texture(std::span<const uint8_t> bytes, const std::files
   return read_texture(*in, file, prefix, options);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

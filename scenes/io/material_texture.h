@@ -8,8 +8,10 @@
 #include <string>
 
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 struct TextureLoadOptions {
   // 8- and 16-bit integer images hold sRGB colour (base colour, emissive); false for data (normals,
@@ -28,4 +30,5 @@ shading::Texture2D load_texture(const std::filesystem::path& path, const Texture
 shading::Texture2D load_texture(std::span<const uint8_t> bytes, const std::filesystem::path& file,
                                 const std::string& where, const TextureLoadOptions& options = {});
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

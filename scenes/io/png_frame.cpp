@@ -9,8 +9,10 @@
 
 #include "scenes/io/atomic_write.h"
 #include "scenes/io/io_error.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -74,4 +76,5 @@ void write_png(WriteBatch& batch, const std::filesystem::path& path, const raste
   batch.stage(path, [&](const std::filesystem::path& tmp) { write_bytes(tmp, png.data(), png.size()); });
 }
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

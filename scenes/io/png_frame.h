@@ -7,8 +7,10 @@
 
 #include "raster/target.h"
 #include "scenes/io/atomic_write.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 // The frame as 8-bit sRGB bytes, top row first, 3 (RGB) or 4 (RGBA) bytes per pixel. An sRGB RGBA8 target's
 // bytes are taken as they are; a linear RGBA8 or an RGBA32F target is clamped to [0, 1] and sRGB-encoded
@@ -24,4 +26,5 @@ void write_png(const std::filesystem::path& path, const raster::ColorTarget& tar
 void write_png(WriteBatch& batch, const std::filesystem::path& path, const raster::ColorTarget& target,
                bool alpha = false);
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -6,8 +6,10 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 class QuietStderr {
  public:
@@ -29,4 +31,5 @@ class QuietStderr {
   int saved_ = -1;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -7,8 +7,10 @@
 #include "scenes/io/io_error.h"
 #include "scenes/io/material_texture.h"
 #include "scenes/scene_queries.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 SceneTextures load_scene_textures(const Scene& scene) {
   SceneTextures out;
@@ -69,4 +71,5 @@ bool has_textures(const Scene& scene) {
   return false;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

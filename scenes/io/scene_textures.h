@@ -8,8 +8,10 @@
 #include "scenes/scene.h"
 #include "shading/surface_texture.h"
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
 
 namespace scenes::io {
+SHADOWLAB_ISA_BEGIN
 
 struct SceneTextures {
   std::vector<shading::Texture2D> base_color;  // per Scene::materials entry; empty() where it names none
@@ -30,4 +32,5 @@ std::vector<shading::SurfaceTexture> surface_textures(const Scene& scene, const 
 // Whether any material names a texture (so a frame needs SceneTextures).
 bool has_textures(const Scene& scene);
 
+SHADOWLAB_ISA_END
 }  // namespace scenes::io

@@ -3,8 +3,10 @@
 
 #include "scenes/reference/occlusion_scene.h"
 #include "scenes/reference/shadow_score.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 raster::ColorTarget error_map(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors) {
   if (errors.size() != size_t(frame.width()) * size_t(frame.height()))
@@ -41,4 +43,5 @@ raster::ColorTarget contact_sheet(const raster::ColorTarget& frame, const std::v
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace reference

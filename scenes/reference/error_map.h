@@ -6,8 +6,10 @@
 #include <vector>
 
 #include "raster/target.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 // `errors`: FrameScore::errors (ErrorBits per pixel, GL row order), one per pixel of `frame`.
 raster::ColorTarget error_map(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors);
@@ -17,4 +19,5 @@ raster::ColorTarget error_map(const raster::ColorTarget& frame, const std::vecto
 raster::ColorTarget contact_sheet(const raster::ColorTarget& frame, const std::vector<uint8_t>& errors,
                                   const raster::ColorTarget* extra = nullptr);
 
+SHADOWLAB_ISA_END
 }  // namespace reference

@@ -10,8 +10,10 @@
 #include <glm/trigonometric.hpp>
 
 #include "scenes/scene_queries.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -110,4 +112,5 @@ ExactVisibility cast_shadow_rays(const OcclusionScene& occluders, const frame::S
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace reference

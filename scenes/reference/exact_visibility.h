@@ -15,8 +15,10 @@
 #include "scenes/frame/surface_record.h"
 #include "scenes/reference/occlusion_scene.h"
 #include "scenes/scene.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 struct ExactVisibility {
   int width = 0, height = 0;
@@ -37,4 +39,5 @@ float default_epsilon(const scenes::Scene& scene);
 ExactVisibility cast_shadow_rays(const OcclusionScene& occluders, const frame::SurfaceRecord& record,
                                  std::span<const scenes::Light> lights, float epsilon, raster::ThreadPool& pool);
 
+SHADOWLAB_ISA_END
 }  // namespace reference

@@ -6,8 +6,10 @@
 #include <vector>
 
 #include "scenes/scene_queries.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 FrameReference reference_for(const scenes::Scene& scene, frame::FrameConfig config, raster::Renderer& renderer,
                              float epsilon, const scenes::io::SceneTextures* textures) {
@@ -42,4 +44,5 @@ ScoredFrame score_config(const scenes::Scene& scene, frame::FrameConfig config, 
   return ScoredFrame{std::move(f), std::move(s), ms};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace reference

@@ -8,8 +8,10 @@
 #include "scenes/reference/exact_visibility.h"
 #include "scenes/reference/shadow_score.h"
 #include "scenes/scene.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 struct FrameReference {
   frame::Frame shadows_off;  // the view with technique none, its surface record kept
@@ -37,4 +39,5 @@ ScoredFrame score_config(const scenes::Scene& scene, frame::FrameConfig config, 
                          const FrameReference& ref, const ScoreOptions& options = {},
                          const scenes::io::SceneTextures* textures = nullptr);
 
+SHADOWLAB_ISA_END
 }  // namespace reference

@@ -6,8 +6,10 @@
 #include <cstring>
 #include <string>
 #include <vector>
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -121,4 +123,5 @@ bool OcclusionScene::occluded(const glm::vec3& o, const glm::vec3& d, float t_ma
   return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }
 
+SHADOWLAB_ISA_END
 }  // namespace reference

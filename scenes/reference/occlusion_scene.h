@@ -14,8 +14,10 @@
 
 #include "scenes/scene_queries.h"
 #include "shading/surface_texture.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 // Embree refused to create a device or build the scene; what() says which and why.
 struct ReferenceError : std::runtime_error {
@@ -43,4 +45,5 @@ class OcclusionScene {
   size_t triangles_ = 0;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace reference

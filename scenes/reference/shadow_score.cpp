@@ -6,8 +6,10 @@
 #include <string>
 
 #include <glm/geometric.hpp>
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -121,4 +123,5 @@ FrameScore score_frame(const frame::SurfaceRecord& r, const ExactVisibility& e, 
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace reference

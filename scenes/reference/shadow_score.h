@@ -15,8 +15,10 @@
 
 #include "scenes/frame/surface_record.h"
 #include "scenes/reference/exact_visibility.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 struct ScoreOptions {
   float shadow_below = 0.5f;  // S below this counts as shadow
@@ -56,4 +58,5 @@ FrameScore score_frame(const frame::SurfaceRecord& technique, const ExactVisibil
 std::vector<uint8_t> exact_boundaries(const frame::SurfaceRecord& record, const ExactVisibility& exact, size_t light);
 std::vector<uint8_t> dilate(const std::vector<uint8_t>& mask, int width, int height, int radius);
 
+SHADOWLAB_ISA_END
 }  // namespace reference

@@ -10,8 +10,10 @@
 
 #include "scenes/reference/frame_reference.h"
 #include "scenes/scene_queries.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -88,4 +90,5 @@ std::vector<LightShimmer> shimmer(const scenes::Scene& scene, const frame::Frame
   return compare_frames(*f0.frame.surface, ref0.exact, *f1.frame.surface, ref1.exact, options.shadow_below);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace reference

@@ -12,8 +12,10 @@
 #include "scenes/reference/exact_visibility.h"
 #include "scenes/reference/shadow_score.h"
 #include "scenes/scene.h"
+#include "raster/simd/isa.h"
 
 namespace reference {
+SHADOWLAB_ISA_BEGIN
 
 struct Motion {
   float camera_pixels = 0.0f;  // sideways, in pixels at the camera's target
@@ -40,4 +42,5 @@ std::vector<LightShimmer> compare_frames(const frame::SurfaceRecord& first, cons
 std::vector<LightShimmer> shimmer(const scenes::Scene& scene, const frame::FrameConfig& config,
                                   raster::Renderer& renderer, const Motion& motion, const ScoreOptions& options = {});
 
+SHADOWLAB_ISA_END
 }  // namespace reference

@@ -7,8 +7,10 @@
 #include <stdexcept>
 
 #include "shading/techniques/full_screen_pass.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -167,4 +169,5 @@ raster::DrawStats blur_map(raster::Renderer& renderer, raster::ColorTarget& map,
   return stats;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -8,8 +8,10 @@
 #include "raster/renderer.h"
 #include "shading/techniques/light_depth.h"
 #include "shading/techniques/moments.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // The float format of a moment kind's targets: one channel per stored moment.
 raster::ColorFormat moment_format(MomentKind kind);
@@ -32,4 +34,5 @@ raster::DrawStats blur_pass(raster::Renderer& renderer, const raster::ColorTarge
 raster::DrawStats blur_map(raster::Renderer& renderer, raster::ColorTarget& map, raster::ColorTarget& scratch,
                            int radius);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

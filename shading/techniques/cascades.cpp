@@ -17,8 +17,10 @@
 #include "shading/techniques/moment_lod.h"
 #include "shading/techniques/pcss.h"
 #include "shading/techniques/slice_set.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -296,4 +298,5 @@ std::unique_ptr<LightShadow> plan_lispsm(const LightDesc& light, const ShadowCon
   return std::make_unique<CascadeShadow>(Technique::lispsm, std::move(plan), s, light, c, in.camera, std::nullopt);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

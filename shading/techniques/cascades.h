@@ -10,8 +10,10 @@
 #include "shading/techniques/technique.h"
 #include "shading/techniques/view_fit.h"
 #include "shading/techniques/view_frustum.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 struct CascadeSettings {
   int count = 4;             // slices, 1-4
@@ -44,4 +46,5 @@ SliceChoice choose_slice(std::span<const float> splits, float blend, float dista
 std::unique_ptr<LightShadow> plan_cascades(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
 std::unique_ptr<LightShadow> plan_lispsm(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

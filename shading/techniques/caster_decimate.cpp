@@ -5,8 +5,10 @@
 #include <unordered_map>
 
 #include <glm/vec3.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -54,4 +56,5 @@ DecimatedMesh cluster_vertices(std::span<const glm::vec3> positions, std::span<c
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -8,8 +8,10 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 struct DecimatedMesh {
   std::vector<glm::vec3> positions;
@@ -21,4 +23,5 @@ struct DecimatedMesh {
 // summed in vertex order.
 DecimatedMesh cluster_vertices(std::span<const glm::vec3> positions, std::span<const uint32_t> indices, float cell);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

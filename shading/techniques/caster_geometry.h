@@ -10,8 +10,10 @@
 #include <glm/vec3.hpp>
 
 #include "shading/surface_texture.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 struct MaskedVertex {
   glm::vec3 position;  // world
@@ -31,4 +33,5 @@ struct CasterGeometry {
   std::span<const MaskedCasters> masked;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

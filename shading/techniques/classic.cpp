@@ -4,8 +4,10 @@
 #include <string>
 
 #include "shading/techniques/tutorial_fit.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 ShadowMapSet plan_classic_map(const ClassicLight& light, const ClassicSettings& s, const ClassicFit& fit) {
   ShadowMapSet set = single_map_layout(s.map_size, s.depth_format);
@@ -151,4 +153,5 @@ std::unique_ptr<LightShadow> plan_classic(const LightDesc& light, const ShadowCo
   return std::make_unique<ClassicShadow>(l, s, fit);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -20,8 +20,10 @@
 #include "shading/techniques/shadow_map_set.h"
 #include "shading/techniques/technique.h"
 #include "shading/techniques/vocabulary.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // The projection a classic map is built with: orthographic (directional) or perspective (spot).
 enum class LightKind : uint8_t { directional, spot };
@@ -166,4 +168,5 @@ LightMatrices tutorial_fit(glm::vec3 direction, const Params& p, const PlanInput
 // light frustum (fit = tutorial).
 std::unique_ptr<LightShadow> plan_classic(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -8,8 +8,10 @@
 #include <glm/trigonometric.hpp>
 
 #include "shading/techniques/moment_lod.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 const char* const kFaceLabels[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
@@ -84,4 +86,5 @@ OmniReader make_cube_reader(const ShadowMapSet& set, const OmniLight& light, con
   return r;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

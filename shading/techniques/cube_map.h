@@ -8,8 +8,10 @@
 #include "shading/lookup_cube.h"
 #include "shading/techniques/filtered.h"
 #include "shading/techniques/omni.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // Layout and matrices: a 3N × 2N target, six passes labelled +X, −X, +Y, −Y, +Z, −Z with
 // view = cube_face_view(face, light) and proj = perspective(90°, 1, near, range).
@@ -81,4 +83,5 @@ float cube_visibility(const OmniReader& r, glm::vec3 p, glm::vec3 n, glm::vec2 f
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

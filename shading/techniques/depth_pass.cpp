@@ -2,8 +2,10 @@
 #include "shading/techniques/depth_pass.h"
 
 #include "shading/techniques/masked_depth.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 ShadowMapSet single_map_layout(int size, raster::DepthFormat format, const char* label) {
   ShadowMapSet set;
@@ -32,4 +34,5 @@ raster::DrawStats build_maps(raster::Renderer& renderer, ShadowMapSet& set, cons
   return stats;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

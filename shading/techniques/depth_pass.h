@@ -12,8 +12,10 @@
 #include "raster/renderer.h"
 #include "shading/techniques/caster_geometry.h"
 #include "shading/techniques/shadow_map_set.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // world position → clip space of one pass; depth only.
 struct WorldDepthShader {
@@ -35,4 +37,5 @@ ShadowMapSet single_map_layout(int size, raster::DepthFormat format, const char*
 raster::DrawStats build_maps(raster::Renderer& renderer, ShadowMapSet& set, const CasterGeometry& casters,
                              const DepthPassOptions& options);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -7,8 +7,10 @@
 
 #include "shading/filter.h"
 #include "shading/texel_format.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -39,7 +41,8 @@ std::optional<std::vector<float>> parse_fade_table(std::string_view text, std::s
     double x = 0.0;
     const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), x);
     if (item.empty() || ec != std::errc() || end != item.data() + item.size()) {
-      why = "'" + std::string(item) + "' is not a number (expected linear, smoothstep, or 2 to " +
+      // Appended, not `"'" + std::string(item)`: GCC 12 warns (-Wrestrict, a false positive) about that form.
+      why = std::string("'").append(item).append("' is not a number (expected linear, smoothstep, or 2 to ") +
             std::to_string(kMaxFadeTexels) + " comma-separated strengths in [0, 1])";
       return std::nullopt;
     }
@@ -76,4 +79,5 @@ float fade_at(const Texture2D& table, float t) {
   return lerp(u - fl, R::red(row, i0), R::red(row, i1));
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -13,8 +13,10 @@
 #include <vector>
 
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // The most texels a table may have (a 1-D texture of the time: 256 entries).
 inline constexpr int kMaxFadeTexels = 256;
@@ -35,4 +37,5 @@ Texture2D make_fade_texture(std::span<const float> strengths);
 // s = (u + 0.5) / N, up to the rounding of that division). v0 + frac · (v1 − v0), as filter.h's lerp.
 float fade_at(const Texture2D& table, float t);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

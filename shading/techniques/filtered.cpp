@@ -9,8 +9,10 @@
 #include "shading/techniques/blur_pass.h"
 #include "shading/techniques/depth_pass.h"
 #include "shading/techniques/moment_lod.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -207,4 +209,5 @@ std::unique_ptr<LightShadow> plan_evsm4(const LightDesc& l, const ShadowConfig& 
   return plan_filtered(l, c, in);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -18,8 +18,10 @@
 #include "shading/techniques/moments.h"
 #include "shading/techniques/technique.h"
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // Everything a fragment needs to read a light's filtered map, copied once per draw.
 struct FilteredReader {
@@ -88,4 +90,5 @@ std::unique_ptr<LightShadow> plan_vsm(const LightDesc& light, const ShadowConfig
 std::unique_ptr<LightShadow> plan_evsm2(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
 std::unique_ptr<LightShadow> plan_evsm4(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -10,8 +10,10 @@
 #include <glm/vec2.hpp>
 
 #include "shading/techniques/slice_set.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -242,4 +244,5 @@ std::unique_ptr<LightShadow> plan_frustum_faces(const LightDesc& light, const Sh
   return std::make_unique<FaceShadow>(std::move(plan), light, c, p.text("map_layout") == "atlas");
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -16,8 +16,10 @@
 #include "shading/techniques/technique.h"
 #include "shading/techniques/view_fit.h"
 #include "shading/techniques/view_frustum.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 enum class FaceWarp : uint8_t { exact, lispsm };
 
@@ -44,4 +46,5 @@ size_t face_owner(const FacePlan& plan, glm::vec3 p, float* margin = nullptr);
 std::unique_ptr<LightShadow> plan_frustum_faces(const LightDesc& light, const ShadowConfig& config,
                                                 const PlanInputs& in);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

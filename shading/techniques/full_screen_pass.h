@@ -8,8 +8,10 @@
 #include <glm/vec4.hpp>
 
 #include "raster/renderer.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // One triangle covering the whole viewport; the pipeline clips it to the viewport like any other.
 inline constexpr std::array<glm::vec4, 3> kFullScreenTriangle = {
@@ -54,4 +56,5 @@ raster::DrawStats draw_full_screen(raster::Renderer& renderer, raster::ColorTarg
                        std::span<const glm::vec4>(kFullScreenTriangle));
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

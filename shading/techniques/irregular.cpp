@@ -12,8 +12,10 @@
 #include <glm/matrix.hpp>
 
 #include "shading/techniques/irregular_cube.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -30,7 +32,6 @@ std::array<glm::vec2, 32> lattice32() {
     p[size_t(i)] = glm::vec2((float(i) + 0.5f) / 32.0f - 0.5f, (float((7 * i) % 32) + 0.5f) / 32.0f - 0.5f);
   return p;
 }
-const std::array<glm::vec2, 32> kThirtyTwo = lattice32();
 const glm::vec2 kCentre[1] = {{0.0f, 0.0f}};
 
 // Samples are projected, sorted and tested in batches: up to this many of each pixel's samples, over a band of
@@ -46,7 +47,12 @@ std::span<const glm::vec2> pixel_sample_offsets(int samples_per_pixel) {
   switch (samples_per_pixel) {
     case 1: return kCentre;
     case 8: return kEight;
-    case 32: return kThirtyTwo;
+    case 32: {
+      // Built on first use, not at start-up: a namespace-scope initialiser would run this set's code before
+      // cli/main.cpp has chosen the set (raster/simd/isa.h).
+      static const std::array<glm::vec2, 32> lattice = lattice32();
+      return lattice;
+    }
     default: return {};
   }
 }
@@ -212,4 +218,5 @@ std::unique_ptr<LightShadow> plan_irregular(const LightDesc& light, const Shadow
   return std::make_unique<IrregularShadow>(light, s, in);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

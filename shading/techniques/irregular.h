@@ -17,8 +17,10 @@
 #include "raster/thread_pool.h"
 #include "shading/techniques/irregular_grid.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 struct IrregularSettings {
   int samples_per_pixel = 1;  // 1, 8 or 32
@@ -59,4 +61,5 @@ IrregularBuffer irregular_visibility(const CameraSurface& surface, const LightDe
 // where the caller offers no camera surface.
 std::unique_ptr<LightShadow> plan_irregular(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

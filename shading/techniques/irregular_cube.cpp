@@ -4,8 +4,10 @@
 #include <algorithm>
 
 #include "shading/cube_face.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 IrregularLight irregular_cube_face(const glm::vec3& position, int face) {
   const CubeFaceAxes& a = kCubeFaceAxes[face];
@@ -43,4 +45,5 @@ std::vector<uint8_t> irregular_cube_shadow(const glm::vec3& position, std::span<
   return result;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -12,8 +12,10 @@
 
 #include "raster/thread_pool.h"
 #include "shading/techniques/irregular_grid.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // The light as face `face`'s grid sees it (GL's face order, CubeFace): the central projection from `position`
 // along the face's major axis, with its s and t axes across.
@@ -28,4 +30,5 @@ std::vector<uint8_t> irregular_cube_shadow(const glm::vec3& position, std::span<
                                            const CasterGeometry& casters, const GridSettings& settings,
                                            raster::ThreadPool& pool, GridStats& stats);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

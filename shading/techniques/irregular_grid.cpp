@@ -14,8 +14,10 @@
 
 #include "shading/techniques/irregular_lists.h"
 #include "shading/techniques/irregular_ray.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -338,4 +340,5 @@ std::vector<uint8_t> irregular_shadow(const IrregularLight& light, std::span<con
   return result;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -14,8 +14,10 @@
 
 #include "raster/thread_pool.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // The light as the grid sees it. Directional: parallel projection along `axis` (the way light travels); spot:
 // central projection from `position` onto the plane one metre down `axis`. `right`, `up` and `axis` are an
@@ -59,4 +61,5 @@ std::vector<uint8_t> irregular_shadow(const IrregularLight& light, std::span<con
                                       const CasterGeometry& casters, const GridSettings& settings,
                                       raster::ThreadPool& pool, GridStats& stats);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

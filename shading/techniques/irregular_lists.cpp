@@ -7,8 +7,10 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 Grid fit_grid(glm::dvec2 lo, glm::dvec2 hi, double cells, int max_side) {
   Grid g;
@@ -141,4 +143,5 @@ SampleLists build_sample_lists(std::span<const glm::dvec2> uv, std::span<const d
   return L;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

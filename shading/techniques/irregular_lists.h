@@ -14,8 +14,10 @@
 #include <glm/vec2.hpp>
 
 #include "raster/thread_pool.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // A uniform grid over a rectangle of the light's view; a point outside it goes to the nearest edge cell.
 struct Grid {
@@ -68,4 +70,5 @@ SampleLists build_sample_lists(std::span<const glm::dvec2> uv, std::span<const d
 inline constexpr double kTopLoad = 8.0;
 inline double split_load(int cell_bound) { return std::clamp(double(cell_bound) / 8.0, 1.0, 8.0); }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

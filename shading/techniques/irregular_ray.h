@@ -8,8 +8,10 @@
 #pragma once
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // One shadow ray: origin + t · dir for 0 < t < t_max. Directional light: dir the unit vector towards the light,
 // t_max infinite. Spot light: dir = light position − origin, t_max = 1 − 10⁻⁵ (the reference stops that short of
@@ -41,4 +43,5 @@ inline bool blocks(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c
   return true;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

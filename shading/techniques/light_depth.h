@@ -6,8 +6,10 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 struct LightDepth {
   bool perspective = false;
@@ -31,4 +33,5 @@ struct LightDepth {
   float of_view(const glm::vec4& v) const { return -v.z / far; }
 };
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

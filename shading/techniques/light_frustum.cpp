@@ -8,8 +8,10 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -81,4 +83,5 @@ LightMatrices spot_frustum(glm::vec3 position, glm::vec3 direction, float outer_
   return m;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -9,8 +9,10 @@
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // An axis-aligned box in world space; empty when min > max.
 struct Box {
@@ -61,4 +63,5 @@ LightMatrices spot_frustum(glm::vec3 position, glm::vec3 direction, float outer_
 // An up vector for lookAt that is not parallel to `direction`.
 glm::vec3 light_up(glm::vec3 direction);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

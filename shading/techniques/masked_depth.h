@@ -11,8 +11,10 @@
 #include "raster/renderer.h"
 #include "raster/shader.h"
 #include "shading/techniques/caster_geometry.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 template <class S>
 struct MaskedDepthShader {
@@ -62,4 +64,5 @@ raster::DrawStats draw_casters(raster::Renderer& renderer, const raster::RenderT
   return stats;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

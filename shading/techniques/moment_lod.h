@@ -13,8 +13,10 @@
 #include "shading/sampler.h"
 #include "shading/techniques/shadow_filters.h"
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // LINEAR within a level, clamped to the edge, with the given mip filter (MipFilter::none: level 0 alone).
 inline Sampler moment_sampler(MipFilter mips) { return Sampler::plain(Filter::linear, Wrap::clamp_to_edge, mips); }
@@ -35,4 +37,5 @@ inline glm::vec4 read_moments(const Texture2D& t, const Sampler& s, glm::vec2 st
   return texture_at(t, s, st, lambda);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -11,8 +11,10 @@
 #include <glm/vec4.hpp>
 
 #include "shading/sampler.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 enum class MomentKind : uint8_t { esm, vsm, evsm2, evsm4 };
 
@@ -94,4 +96,5 @@ inline float moment_visibility(const MomentParams& p, const glm::vec4& m, float 
   return 1.0f;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -7,8 +7,10 @@
 #include "shading/filter.h"
 #include "shading/sampler.h"
 #include "shading/techniques/full_screen_pass.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -62,4 +64,5 @@ raster::DrawStats offset_blur(raster::Renderer& renderer, std::unique_ptr<raster
   return stats;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -10,8 +10,10 @@
 #include <memory>
 
 #include "raster/renderer.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // The largest offset in texels: beyond it a pass would read past its neighbours.
 inline constexpr float kMaxBlurOffset = 1.0f;
@@ -28,4 +30,5 @@ raster::DrawStats offset_blur_pass(raster::Renderer& renderer, const raster::Col
 raster::DrawStats offset_blur(raster::Renderer& renderer, std::unique_ptr<raster::ColorTarget>& map,
                               std::unique_ptr<raster::ColorTarget>& scratch, int passes, float offset);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -1,7 +1,9 @@
 // The light frame of the omnidirectional techniques (see omni.h).
 #include "shading/techniques/omni.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 LightFrame light_frame(glm::vec3 origin, glm::vec3 forward) {
   LightFrame f;
@@ -38,4 +40,5 @@ OmniReader omni_reader_base(OmniKind kind, const LightFrame& frame, const OmniLi
   return r;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

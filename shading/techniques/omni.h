@@ -21,8 +21,10 @@
 #include "shading/techniques/shadow_filters.h"
 #include "shading/techniques/shadow_map_set.h"
 #include "shading/techniques/vocabulary.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 enum class OmniKind : uint8_t { cube, paraboloid, pyramid };
 
@@ -161,4 +163,5 @@ struct RadialDepthShader {
   }
 };
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -12,8 +12,10 @@
 #include "shading/techniques/paraboloid.h"
 #include "shading/techniques/pyramid.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 inline void omni_visibility(const OmniReader& r, std::span<const ShadowQuery> q, std::span<float> vis) {
   dispatch_filter(r.filter_kind, r.filter.pcf_taps, [&]<class F, bool kPcf>() {
@@ -41,4 +43,5 @@ std::unique_ptr<LightShadow> plan_pyramid(const LightDesc& light, const ShadowCo
 // "x", "-y", ... or "a,b,c": a paraboloid split plane's normal; none when the text is neither.
 std::optional<glm::vec3> parse_split_plane(const std::string& text);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

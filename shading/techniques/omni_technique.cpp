@@ -7,8 +7,10 @@
 #include <string>
 
 #include "shading/techniques/omni_read.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 std::optional<glm::vec3> parse_split_plane(const std::string& t) {
   if (t == "x") return glm::vec3(1, 0, 0);
@@ -183,4 +185,5 @@ std::unique_ptr<LightShadow> plan_pyramid(const LightDesc& l, const ShadowConfig
   return plan_omni(OmniKind::pyramid, l, c);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -1,7 +1,9 @@
 // Planning, building and reader setup of the dual-paraboloid shadow map (see paraboloid.h).
 #include "shading/techniques/paraboloid.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 LightFrame paraboloid_frame(const OmniLight& light, const OmniSettings& s) {
   const glm::vec3 axis = !light.hemispherical && s.split_normal ? *s.split_normal : light.direction;
@@ -68,4 +70,5 @@ OmniReader make_paraboloid_reader(const ShadowMapSet& set, const OmniLight& ligh
   return r;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -13,8 +13,10 @@
 #include <glm/vec4.hpp>
 
 #include "shading/techniques/omni.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // The description's mapDepthToARGB32: res = frac(value · (256³, 256², 256, 1)); res −= res.xxyz · (0, 1/256,
 // 1/256, 1/256). Channel w holds the most significant digit.
@@ -100,4 +102,5 @@ float paraboloid_visibility(const OmniReader& r, glm::vec3 p, glm::vec3 n, glm::
   return Filter{}(Taps<kPcfTaps>{&r.maps[front ? 0 : 1]}, ctx, r.filter);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -10,8 +10,10 @@
 #include "shading/lookup.h"
 #include "shading/techniques/depth_pass.h"
 #include "shading/techniques/poisson.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 glm::vec2 pcss_search_radius(const PcssReader& r, float ref) {
   if (!r.depth.perspective) return r.scale * (ref * r.range * r.tan_half);
@@ -154,4 +156,5 @@ std::unique_ptr<LightShadow> plan_pcss(const LightDesc& light, const ShadowConfi
   return std::make_unique<PcssShadow>(l, s, fit, size);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

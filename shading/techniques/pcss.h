@@ -13,8 +13,10 @@
 #include "shading/techniques/light_depth.h"
 #include "shading/techniques/technique.h"
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 struct PcssReader {
   ClassicReader classic;  // matrices, bias, the hardware PCF lookup of the filter taps
@@ -57,4 +59,5 @@ float pcss_visibility(const PcssReader& r, glm::vec3 p, glm::vec3 n, glm::vec2 f
 
 std::unique_ptr<LightShadow> plan_pcss(const LightDesc& light, const ShadowConfig& config, const PlanInputs& in);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

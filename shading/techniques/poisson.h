@@ -8,8 +8,10 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 inline constexpr std::array<glm::vec2, 16> kPoissonDisk = {{
     {-0.94201624f, -0.39906216f}, {0.94558609f, -0.76890725f}, {-0.094184101f, -0.92938870f},
@@ -52,4 +54,5 @@ inline glm::vec2 rotation_of(uint32_t seed) {
   return {std::cos(a), std::sin(a)};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

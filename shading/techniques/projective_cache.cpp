@@ -2,8 +2,10 @@
 #include "shading/techniques/projective_cache.h"
 
 #include <cstring>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 // FNV-1a taken eight bytes at a time (then the tail byte by byte): a mesh is hashed every frame it is a
@@ -54,4 +56,5 @@ void ProjectiveCache::end_frame() {
   std::erase_if(entries_, [](const auto& kv) { return !kv.second.used; });
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -11,8 +11,10 @@
 #include <glm/mat4x4.hpp>
 
 #include "shading/techniques/projective_map.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // One instance of a caster as the key sees it.
 struct CasterInstanceKey {
@@ -74,4 +76,5 @@ class ProjectiveCache {
   size_t rebuilt_ = 0, reused_ = 0;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

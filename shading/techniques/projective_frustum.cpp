@@ -9,8 +9,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "shading/techniques/shadow_map_set.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -103,4 +105,5 @@ bool box_overlaps(const CasterFrustum& f, const Box& box) {
   return true;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -11,8 +11,10 @@
 
 #include "shading/techniques/light_frustum.h"
 #include "shading/techniques/projective_types.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // n · p + d >= 0 on the inside.
 struct FrustumPlane {
@@ -40,4 +42,5 @@ CasterFrustum fit_caster_frustum(const ProjectiveLight& light, const Box& caster
 // Whether any point of `box` can lie inside the frustum (conservative: a box outside one plane is out).
 bool box_overlaps(const CasterFrustum& f, const Box& box);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

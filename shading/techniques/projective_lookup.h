@@ -17,8 +17,10 @@
 #include "shading/lookup.h"
 #include "shading/techniques/fade_table.h"
 #include "shading/techniques/projective_map.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 struct ProjectiveReader {
   glm::mat4 texgen{1.0f};
@@ -98,4 +100,5 @@ inline Quad<float> projective_factors(const ProjectiveReader& r, const Quad<glm:
   return f;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

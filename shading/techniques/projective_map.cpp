@@ -7,8 +7,10 @@
 #include "shading/techniques/caster_decimate.h"
 #include "shading/techniques/masked_depth.h"
 #include "shading/techniques/offset_blur.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 MipPlan plan_mips(int map_size, float lod_bias) {
   const int levels = mip_level_count(std::max(map_size, 1), std::max(map_size, 1));
@@ -78,4 +80,5 @@ CasterMap build_caster_map(raster::Renderer& renderer, const ProjectiveLight& li
   return m;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -16,8 +16,10 @@
 #include "shading/texture.h"
 #include "shading/techniques/projective_frustum.h"
 #include "shading/techniques/projective_types.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // One piece of a caster in world space with the grey it is drawn with.
 struct CasterPart {
@@ -74,4 +76,5 @@ struct CasterMaskShader {
 CasterMap build_caster_map(raster::Renderer& renderer, const ProjectiveLight& light,
                            const ProjectiveSettings& settings, const Box& bounds, std::span<const CasterPart> parts);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

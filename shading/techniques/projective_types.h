@@ -8,8 +8,10 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // A projector: orthographic along `direction` for a directional light, perspective from `position` for spot
 // and point lights (a point light projects from its position towards each caster).
@@ -68,4 +70,5 @@ constexpr std::optional<FadeLookup> parse_fade_lookup(std::string_view s) {
   return std::nullopt;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -4,8 +4,10 @@
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 const char* const kLabels[4] = {"1 top", "2 right", "3 bottom", "4 left"};
@@ -61,4 +63,5 @@ OmniReader make_pyramid_reader(const ShadowMapSet& set, const OmniLight& light, 
   return r;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

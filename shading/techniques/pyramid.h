@@ -15,8 +15,10 @@
 #include <span>
 
 #include "shading/techniques/omni.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // The region (0..3 for passes 1..4) the lookup's branches give a light-space (x, y); ties go to the first
 // branch that accepts them, as in the description's if/else chain.
@@ -92,4 +94,5 @@ float pyramid_visibility(const OmniReader& r, glm::vec3 p, glm::vec3 n, glm::vec
   return Filter{}(Taps<kPcfTaps>{&r.maps[0]}, ctx, r.filter);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -11,8 +11,10 @@
 #include "shading/techniques/omni_read.h"
 #include "shading/techniques/pcss.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -79,4 +81,5 @@ std::string Params::text(std::string_view key) const {
   return std::string(s.fallback);
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

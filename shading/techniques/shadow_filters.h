@@ -13,8 +13,10 @@
 #include "shading/techniques/poisson.h"
 #include "shading/techniques/tutorial_random.h"
 #include "shading/techniques/vocabulary.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // Where and what one lookup compares.
 struct SampleContext {
@@ -172,4 +174,5 @@ decltype(auto) dispatch_filter(FilterKind kind, bool pcf_taps, Fn&& fn) {
   return go.template operator()<EarlyBailFilter>();
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

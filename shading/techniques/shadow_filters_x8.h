@@ -9,8 +9,10 @@
 #include "raster/simd/vec.h"
 #include "shading/shadow_lookup.h"
 #include "shading/techniques/shadow_filters.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // Up to eight sample contexts, also as lanes (s, t, ref). Lanes past `count` repeat lane 0: they are looked up
 // and their results ignored.
@@ -115,4 +117,5 @@ raster::simd::VecF32 filter_lanes(const MapLookups& maps, const SampleLanes& b, 
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

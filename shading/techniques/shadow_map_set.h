@@ -13,8 +13,10 @@
 
 #include "raster/state.h"
 #include "raster/target.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 struct ShadowPass {
   std::string label;        // "main", "cascade0", "+X", ...
@@ -55,4 +57,5 @@ inline bool map_texel(const glm::mat4& shadow, bool perspective, glm::vec2 size,
   return true;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -15,8 +15,10 @@
 #include "shading/techniques/shadow_filters.h"
 #include "shading/techniques/shadow_filters_x8.h"
 #include "shading/techniques/shadow_map_set.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // One map as a fragment reads it; snapshotted once per frame.
 struct SliceMap {
@@ -156,4 +158,5 @@ void slices_visibility_x8(std::span<const SliceMap> maps, const SliceLight& l, s
   }
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -2,8 +2,10 @@
 #include "shading/techniques/slice_set.h"
 
 #include <algorithm>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 SliceSet::SliceSet(Technique technique, std::vector<FittedMap> fits, std::vector<std::string> labels,
                    const LightDesc& light, const ShadowConfig& c, bool atlas)
@@ -57,4 +59,5 @@ std::vector<MapRecord> SliceSet::records() const {
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

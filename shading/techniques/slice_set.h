@@ -12,8 +12,10 @@
 #include "shading/techniques/slice_read.h"
 #include "shading/techniques/technique.h"
 #include "shading/techniques/view_fit.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 class SliceSet {
  public:
@@ -38,4 +40,5 @@ class SliceSet {
   std::vector<SliceMap> maps_;
 };
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

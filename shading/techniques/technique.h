@@ -23,8 +23,10 @@
 #include "shading/techniques/light_frustum.h"
 #include "shading/techniques/shadow_filters.h"
 #include "shading/techniques/vocabulary.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // A bad setting found while planning; what() names the setting (e.g. `lights[1].shadow.params.split_plane`).
 struct TechniqueError : std::invalid_argument {
@@ -191,4 +193,5 @@ struct TechniqueImpl {
 std::span<const TechniqueImpl> registry();
 const TechniqueImpl* find_impl(Technique t);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

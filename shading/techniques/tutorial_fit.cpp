@@ -7,8 +7,10 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 bool box_in_frustum(const glm::mat4& view_proj, const Box& b) {
   if (b.empty()) return false;
@@ -125,4 +127,5 @@ LightMatrices light_box_matrices(const LightBox& b, float margin) {
   return m;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -15,8 +15,10 @@
 #include <glm/vec3.hpp>
 
 #include "shading/techniques/light_frustum.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // What the sets are taken against besides the objects.
 struct TutorialFitInput {
@@ -64,4 +66,5 @@ LightBox smooth_light_box(const LightBox& now, const std::optional<LightBox>& pr
 // The orthographic light of a box in the light's frame, widened by `margin` (relative) on every side.
 LightMatrices light_box_matrices(const LightBox& b, float margin = 0.01f);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

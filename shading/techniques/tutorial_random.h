@@ -8,8 +8,10 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // GLSL's fract: x - floor(x). In float it can round up to 1.0 (x a tiny negative number), which is why the
 // tutorial takes its index modulo 16.
@@ -39,4 +41,5 @@ inline glm::vec2 tutorial_rotation(glm::vec3 seed) {
   return {std::cos(a), std::sin(a)};
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -8,8 +8,10 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -142,4 +144,5 @@ FittedMap fit_lispsm(glm::vec3 direction, std::span<const glm::vec3> body, const
   return m;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -12,8 +12,10 @@
 
 #include "shading/techniques/light_frustum.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 struct FittedMap {
   glm::mat4 view{1.0f}, proj{1.0f};
@@ -44,4 +46,5 @@ inline constexpr float kLispsmMinSin = 1e-3f;
 FittedMap fit_lispsm(glm::vec3 direction, std::span<const glm::vec3> body, const Box& casters,
                      const CameraView& camera, float z_n, float z_f);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -7,8 +7,10 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 #include <glm/vector_relational.hpp>
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 float view_distance(const CameraView& c, glm::vec3 p) { return glm::dot(p - c.eye, c.forward); }
 
@@ -148,4 +150,5 @@ std::vector<glm::vec3> clip_slice_to_box(const std::array<glm::vec3, 8>& c, cons
   return out;
 }
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -9,8 +9,10 @@
 
 #include "shading/techniques/light_frustum.h"
 #include "shading/techniques/technique.h"
+#include "raster/simd/isa.h"
 
 namespace shading::tech {
+SHADOWLAB_ISA_BEGIN
 
 // A range of view distances along the camera's forward axis.
 struct ViewRange {
@@ -46,4 +48,5 @@ void visible_body(const CameraView& c, const VisibleSamples& v, float a, float b
 // two do not overlap.
 std::vector<glm::vec3> clip_slice_to_box(const std::array<glm::vec3, 8>& slice, const Box& box);
 
+SHADOWLAB_ISA_END
 }  // namespace shading::tech

@@ -28,8 +28,10 @@ inline std::string slurp(const std::filesystem::path& p) {
 }
 
 // Runs `shadowlab ARGS` in `dir` (a shell command line; arguments are quoted by the caller where needed).
-inline Outcome shadowlab(const std::filesystem::path& dir, const std::string& args) {
-  const std::string cmd = "cd '" + dir.string() + "' && '" SHADOWLAB_CLI "' " + args + " >stdout.txt 2>stderr.txt";
+// `prefix` goes in front of the executable: environment assignments ("NAME=value") and/or a wrapper command.
+inline Outcome shadowlab(const std::filesystem::path& dir, const std::string& args, const std::string& prefix = "") {
+  const std::string cmd =
+      "cd '" + dir.string() + "' && " + prefix + " '" SHADOWLAB_CLI "' " + args + " >stdout.txt 2>stderr.txt";
   const int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout.txt"), slurp(dir / "stderr.txt")};
 }

@@ -11,7 +11,11 @@ if(TARGET shadowlab)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/kill_test.cpp)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/material_cli_test.cpp)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/look_cli_test.cpp)
+  list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_LIST_DIR}/isa_dispatch_test.cpp)
   list(APPEND SHADOWLAB_TEST_DEFINITIONS SHADOWLAB_CLI="$<TARGET_FILE:shadowlab>")
+  # The instruction sets the executable holds, comma-separated (isa_dispatch_test.cpp compares them).
+  string(REPLACE ";" "," _isas "${SHADOWLAB_ISAS}")
+  list(APPEND SHADOWLAB_TEST_DEFINITIONS SHADOWLAB_BUILT_ISAS="${_isas}")
   find_package(nlohmann_json CONFIG REQUIRED)
   # valijson (Debian libvalijson-dev, header-only) checks the --json documents against docs/cli/*.schema.json.
   find_package(valijson CONFIG REQUIRED)

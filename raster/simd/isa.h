@@ -1,0 +1,46 @@
+// The instruction set a translation unit's pipeline code is built for, as a namespace: every namespace block of
+// raster/, shading/, scenes/{io,frame,reference}/ and cli/ opens SHADOWLAB_ISA_BEGIN and closes SHADOWLAB_ISA_END,
+// so the same sources compiled for AVX2 and for plain x86-64 give distinct symbols (raster::isa_avx2::Renderer,
+// raster::isa_scalar::Renderer) that live side by side in one binary; cli/main.cpp picks one when it starts.
+//
+// Why a namespace and not just a compiler flag: an inline function or template compiled in two translation
+// units becomes one symbol at link time, and the linker keeps either copy. If AVX2 units were simply built
+// with -mavx2, a copy built with AVX2 instructions could serve the scalar path on a CPU without AVX2. With the
+// namespace, our own code cannot mix; and where the libraries are built for several instruction sets
+// (SHADOWLAB_ISAS names more than one), the AVX2 target is switched on by a pragma around our namespace blocks
+// only, so the standard library's, GLM's and oneTBB's inline functions, instantiated outside them, stay plain
+// x86-64 code in every unit. Headers with plain data only (raster/formats.h, raster/state.h,
+// shading/tone_map.h, shading/techniques/vocabulary.h) stay outside: their types are shared by every path and
+// by the scene library, which is built once.
+//
+// A translation unit defines exactly one of SHADOWLAB_SIMD_AVX2 and SHADOWLAB_SIMD_SCALAR (CMake does, from the
+// library it belongs to). Built with -mavx2 on the command line (a one-ISA build, the tests and benchmarks),
+// the pragma is not needed and not emitted.
+#pragma once
+
+#if defined(SHADOWLAB_SIMD_AVX2) == defined(SHADOWLAB_SIMD_SCALAR)
+#error "define exactly one of SHADOWLAB_SIMD_AVX2 and SHADOWLAB_SIMD_SCALAR (CMake does this per library)"
+#endif
+
+#if defined(SHADOWLAB_SIMD_AVX2)
+#define SHADOWLAB_ISA_NAME "avx2"
+#if defined(__AVX2__) && defined(__FMA__) && defined(__BMI2__) && defined(__F16C__) && defined(__LZCNT__)
+#define SHADOWLAB_ISA_BEGIN inline namespace isa_avx2 {
+#define SHADOWLAB_ISA_END }
+#elif defined(__GNUC__) && !defined(__clang__)
+// The features cli/isa_dispatch.cpp checks before it takes this path.
+#define SHADOWLAB_ISA_BEGIN                                  \
+  _Pragma("GCC push_options")                                \
+  _Pragma("GCC target(\"avx2,fma,bmi,bmi2,lzcnt,f16c\")") \
+  inline namespace isa_avx2 {
+#define SHADOWLAB_ISA_END \
+  }                       \
+  _Pragma("GCC pop_options")
+#else
+#error "an AVX2 path without -mavx2 on the command line needs GCC's target pragma: configure SHADOWLAB_ISAS=avx2 alone"
+#endif
+#else
+#define SHADOWLAB_ISA_NAME "scalar"
+#define SHADOWLAB_ISA_BEGIN inline namespace isa_scalar {
+#define SHADOWLAB_ISA_END }
+#endif

@@ -1,0 +1,149 @@
+// The one executable's instruction sets (cli/main.cpp, raster/simd/isa.h): SHADOWLAB_ISA forces a path, --version
+// and --json say which one ran, a bad value is refused in one line, every path writes the same bytes (frames,
+// per-pixel channels and every shadow map of each technique family, scalar against AVX2), and the executable runs
+// on a CPU without AVX at all (QEMU's user-mode emulation of a Nehalem; skipped where qemu-x86_64 is missing),
+// where it takes the scalar path by itself. Where the build holds one set (SHADOWLAB_ISAS, e.g. the clang
+// sanitizer build), the comparisons are skipped.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_run.h"
+#include "tests/support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using testsupport::Outcome;
+using testsupport::shadowlab;
+
+bool built(const std::string& isa) {
+  return ("," + std::string(SHADOWLAB_BUILT_ISAS) + ",").find("," + isa + ",") != std::string::npos;
+}
+
+bool cpu_has_avx2() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
+         __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("lzcnt") && __builtin_cpu_supports("f16c");
+}
+
+// Every file under `dir`, by path relative to it, with its bytes.
+std::map<std::string, std::string> files_under(const fs::path& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file() && e.path().filename() != "stdout.txt" && e.path().filename() != "stderr.txt")
+      out[fs::relative(e.path(), dir).string()] = testsupport::slurp(e.path());
+  return out;
+}
+
+TEST(CliIsa, VersionNamesTheForcedPath) {
+  if (!built("scalar") || !built("avx2")) GTEST_SKIP() << "this build holds one instruction set: " SHADOWLAB_BUILT_ISAS;
+  const fs::path dir = testsupport::temp_dir("cli_isa_version");
+  Outcome r = shadowlab(dir, "--version", "SHADOWLAB_ISA=scalar");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("SIMD path scalar"));
+  r = shadowlab(dir, "--version", "SHADOWLAB_ISA=auto");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr(cpu_has_avx2() ? "SIMD path avx2" : "SIMD path scalar"));
+  r = shadowlab(dir, "--version", "SHADOWLAB_ISA=avx2");
+  if (cpu_has_avx2()) {
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_THAT(r.out, ::testing::HasSubstr("SIMD path avx2"));
+  } else {
+    EXPECT_EQ(r.code, 2);
+    EXPECT_THAT(r.err, ::testing::StartsWith("shadowlab: error: SHADOWLAB_ISA: avx2 was asked for"));
+  }
+  // The documents scripts keep say which path made them.
+  r = shadowlab(dir, "list --json", "SHADOWLAB_ISA=scalar");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("\"simd\": \"scalar\""));
+}
+
+TEST(CliIsa, UnknownPathIsRefusedInOneLine) {
+  const fs::path dir = testsupport::temp_dir("cli_isa_bad");
+  const Outcome r = shadowlab(dir, "render tutorial --size 16x16 --out o.png", "SHADOWLAB_ISA=avx512");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "shadowlab: error: SHADOWLAB_ISA: unknown instruction set (expected avx2, scalar or auto)\n");
+  EXPECT_FALSE(fs::exists(dir / "o.png"));
+}
+
+// One command line per family of passes the paths could disagree on: depth-only map passes (every format),
+// PCF and Poisson lookups, the directional family, the filterable maps' encode, blur and mip passes, PCSS,
+// point and hemispherical lights, projective textures and the irregular z-buffer. Each writes the frame, its
+// per-pixel channels (floats: no 8-bit rounding hides a difference) and every shadow map.
+TEST(CliIsa, ScalarAndAvx2WriteTheSameBytes) {
+  if (!built("scalar") || !built("avx2")) GTEST_SKIP() << "this build holds one instruction set: " SHADOWLAB_BUILT_ISAS;
+  if (!cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2 path to compare with";
+  const std::string out = " --size 96x64 --shadow-size 256 --threads 2 --out f.png --aov-out aov.exr --maps maps";
+  const std::vector<std::string> cases = {
+      "render tutorial --technique shadowmap --filter pcf --depth-format d16" + out,
+      "render tutorial --technique shadowmap --filter poisson --bias slope --depth-format d24" + out,
+      "render tutorial --technique cascades" + out,
+      "render tutorial --technique lispsm" + out,
+      "render tutorial --technique frustum-faces" + out,
+      "render tutorial --technique vsm" + out,
+      "render tutorial --technique evsm4 --blur-radius 3" + out,
+      "render tutorial --technique esm --moment-mips nearest" + out,
+      "render tutorial --technique pcss" + out,
+      "render tutorial --technique irregular" + out,
+      "render tutorial-spot --technique pcss" + out,
+      "render paraboloid --technique cube" + out,
+      "render paraboloid --technique paraboloid" + out,
+      "render pyramid --technique pyramid" + out,
+      "render projective" + out,
+      "render duel" + out,
+  };
+  for (size_t i = 0; i < cases.size(); ++i) {
+    std::map<std::string, std::string> outputs[2];
+    for (int k = 0; k < 2; ++k) {
+      const char* isa = k == 0 ? "scalar" : "avx2";
+      const fs::path dir = testsupport::temp_dir("cli_isa_" + std::to_string(i) + "_" + isa);
+      const Outcome r = shadowlab(dir, cases[i], std::string("SHADOWLAB_ISA=") + isa);
+      ASSERT_EQ(r.code, 0) << isa << ": " << cases[i] << "\n" << r.err;
+      outputs[k] = files_under(dir);
+    }
+    ASSERT_TRUE(outputs[0].count("f.png") && outputs[0].count("aov.exr")) << cases[i];  // (irregular: no map)
+    ASSERT_EQ(outputs[0].size(), outputs[1].size()) << cases[i];
+    for (const auto& [name, bytes] : outputs[0]) {
+      ASSERT_TRUE(outputs[1].count(name)) << cases[i] << ": avx2 wrote no " << name;
+      EXPECT_TRUE(bytes == outputs[1].at(name)) << cases[i] << ": " << name << " differs between scalar and avx2";
+    }
+  }
+}
+
+// The binary built with -mavx2 throughout died here with SIGILL before main (checked with the previous build):
+// this is what "one binary that runs anywhere" has to survive, static initialisers included.
+TEST(CliIsa, RunsOnACpuWithoutAvx) {
+  if (!built("scalar")) GTEST_SKIP() << "this build has no scalar path: " SHADOWLAB_BUILT_ISAS;
+  if (std::system("command -v qemu-x86_64 >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "qemu-x86_64 (Debian qemu-user) is not installed";
+  const fs::path dir = testsupport::temp_dir("cli_isa_qemu");
+  const std::string nehalem = "qemu-x86_64 -cpu Nehalem";
+  Outcome r = shadowlab(dir, "--version", nehalem);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("SIMD path scalar"));
+  r = shadowlab(dir, "--version", "SHADOWLAB_ISA=avx2 " + nehalem);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("shadowlab: error: SHADOWLAB_ISA: avx2 was asked for, but this CPU lacks"));
+  // A frame and its maps on the emulated CPU, byte for byte those of the host's own default path.
+  const std::string args =
+      "render tutorial --technique vsm --size 64x48 --shadow-size 128 --threads 2 --out f.png --maps maps";
+  r = shadowlab(dir, args, nehalem);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::map<std::string, std::string> emulated = files_under(dir);
+  const fs::path host = testsupport::temp_dir("cli_isa_qemu_host");
+  ASSERT_EQ(shadowlab(host, args).code, 0);
+  const std::map<std::string, std::string> native = files_under(host);
+  ASSERT_EQ(emulated.size(), native.size());
+  for (const auto& [name, bytes] : native) {
+    ASSERT_TRUE(emulated.count(name)) << name;
+    EXPECT_TRUE(bytes == emulated.at(name)) << name << " differs on the emulated CPU";
+  }
+}
+
+}  // namespace
