@@ -44,6 +44,10 @@ for scene in tutorial duel; do
   done
   oiiotool "${shots[@]}" --mosaic 3x2 -o "$img/filtered/contact-$scene.png"
 done
+# PCSS on the cube map (15 cm light) beside the cube with PCF, on the paraboloid scene's point light.
+"$bin" render paraboloid --size 480x270 --technique cube --soft-shadows pcss --light-radius 0.15 --out "$work/cube-pcss.png"
+"$bin" render paraboloid --size 480x270 --technique cube --out "$work/cube-pcf.png"
+oiiotool "$work/cube-pcss.png" "$work/cube-pcf.png" --mosaic 2x1 -o "$img/filtered/cube-pcss.png"
 
 # docs/omnidirectional.md: the square frame under the lamp with the pyramid and the paraboloid maps.
 "$bin" render docs/examples/omni-caster.json --technique pyramid --size 480x320 --out "$work/pyr.png" --maps "$work/pyr"

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "shading/techniques/cube_pcss.h"
 #include "shading/techniques/omni_read.h"
 #include "raster/simd/isa.h"
 
@@ -48,8 +49,9 @@ Technique technique_of(OmniKind k) {
 
 class OmniShadow final : public LightShadow {
  public:
-  OmniShadow(OmniKind kind, const OmniLight& light, const OmniSettings& s, std::optional<CubeMoments> moments)
-      : kind_(kind), light_(light), s_(s), moments_(std::move(moments)) {
+  OmniShadow(OmniKind kind, const OmniLight& light, const OmniSettings& s, std::optional<CubeMoments> moments,
+             std::optional<CubePcss> pcss)
+      : kind_(kind), light_(light), s_(s), moments_(std::move(moments)), pcss_(pcss) {
     switch (kind_) {
       case OmniKind::cube: set_ = plan_cube_map(light_, s_); break;
       case OmniKind::paraboloid: set_ = plan_paraboloid_map(light_, s_); break;
@@ -80,6 +82,10 @@ class OmniShadow final : public LightShadow {
   void visibility(std::span<const ShadowQuery> q, std::span<float> vis) const override {
     if (moments_) {
       for (size_t i = 0; i < q.size(); ++i) vis[i] = cube_moment_visibility(reader_, *moments_, q[i]);
+      return;
+    }
+    if (pcss_) {
+      for (size_t i = 0; i < q.size(); ++i) vis[i] = cube_pcss_visibility(reader_, *pcss_, q[i].p, q[i].n, q[i].frag);
       return;
     }
     omni_visibility(reader_, q, vis);
@@ -123,6 +129,7 @@ class OmniShadow final : public LightShadow {
   ShadowMapSet set_;
   OmniReader reader_;
   std::optional<CubeMoments> moments_;  // cube with `moments`
+  std::optional<CubePcss> pcss_;        // cube with `soft_shadows = pcss`
 };
 
 std::unique_ptr<LightShadow> plan_omni(OmniKind kind, const LightDesc& light, const ShadowConfig& c) {
@@ -152,12 +159,25 @@ std::unique_ptr<LightShadow> plan_omni(OmniKind kind, const LightDesc& light, co
                          " must be even (two halves per axis)");
   const Params p(c);
   std::optional<CubeMoments> moments;
+  std::optional<CubePcss> pcss;
   if (kind == OmniKind::cube) {
     s.seamless = p.flag("seamless");
     if (const std::optional<MomentKind> k = moments_param(c)) {
       moments.emplace();
       moments->params = moment_params(*k, c);
       moments->blur_radius = int(p.number("blur_radius"));
+    }
+    if (p.text("soft_shadows") == "pcss") {
+      if (moments)
+        throw TechniqueError(p.where("soft_shadows") + ": pcss and moments = " + p.text("moments") +
+                             " both replace the filter; choose one");
+      if (c.filter != FilterKind::pcf || c.filter_params.pcf_taps)
+        throw TechniqueError(c.where.substr(0, c.where.size() - std::string_view("params.").size()) + "filter: " +
+                             std::string(to_string(c.filter)) +
+                             " is not used with soft_shadows = pcss (PCSS filters with its own kernel)");
+      pcss = CubePcss{float(p.number("light_radius")), s.near_plane};
+    } else if (p.given("light_radius")) {
+      throw TechniqueError(p.where("light_radius") + ": the light's size is read by soft_shadows = pcss only");
     }
   }
   if (kind == OmniKind::paraboloid) {
@@ -170,7 +190,7 @@ std::unique_ptr<LightShadow> plan_omni(OmniKind kind, const LightDesc& light, co
                              "' is not light, x, y, z, -x, -y, -z or a non-zero normal a,b,c");
     }
   }
-  return std::make_unique<OmniShadow>(kind, l, s, std::move(moments));
+  return std::make_unique<OmniShadow>(kind, l, s, std::move(moments), pcss);
 }
 
 }  // namespace

@@ -213,6 +213,18 @@ inline constexpr ParamSpec kMomentsParam = {
     "cascades, cube: each slice's or face's map compared with the filter (none), or turned into blurred "
     "filterable moments as the esm, vsm, evsm2 and evsm4 techniques, with their parameters", 0, 0,
     {"none", "esm", "vsm", "evsm2", "evsm4"}};
+inline constexpr ParamSpec kLightAngleParam = {
+    "light_angle", "--light-angle", ParamKind::number, "1",
+    "pcss, and cascades with soft_shadows = pcss: the directional light's angular diameter in degrees (the sun: 0.53)",
+    0, 30};
+inline constexpr ParamSpec kLightRadiusParam = {
+    "light_radius", "--light-radius", ParamKind::number, "0.1",
+    "pcss (spot light), and cube with soft_shadows = pcss: the light's radius in metres", 0, 100};
+inline constexpr ParamSpec kSoftShadowsParam = {
+    "soft_shadows", "--soft-shadows", ParamKind::choice, "none",
+    "cascades, cube: each slice's or face's map read through the light's filter (none), or with PCSS (pcss): "
+    "blocker search and penumbra from the light's size (cascades: light_angle, in each slice's own texels; cube: "
+    "light_radius, across the faces)", 0, 0, {"none", "pcss"}};
 // The cube's moments are blurred face by face (docs/filtered-shadows.md).
 inline constexpr ParamSpec kCubeParams[] = {
     {"seamless", "--seamless", ParamKind::flag, "true",
@@ -226,15 +238,9 @@ inline constexpr ParamSpec kCubeParams[] = {
     kEvsmPositiveParam,
     kEvsmNegativeParam,
     kEvsmMinVarianceParam,
+    kSoftShadowsParam,
+    kLightRadiusParam,
 };
-inline constexpr ParamSpec kLightAngleParam = {
-    "light_angle", "--light-angle", ParamKind::number, "1",
-    "pcss, and cascades with soft_shadows = pcss: the directional light's angular diameter in degrees (the sun: 0.53)",
-    0, 30};
-inline constexpr ParamSpec kSoftShadowsParam = {
-    "soft_shadows", "--soft-shadows", ParamKind::choice, "none",
-    "cascades: each slice's map read through the light's filter (none), or with PCSS (pcss): blocker search and "
-    "penumbra in the slice's own texels from light_angle", 0, 0, {"none", "pcss"}};
 inline constexpr ParamSpec kCascadeParams[] = {
     {"cascades", "--cascades", ParamKind::integer, "4", "cascades: number of slices of the view frustum", 1, 4},
     {"split_lambda", "--split-lambda", ParamKind::number, "0.75",
@@ -259,10 +265,7 @@ inline constexpr ParamSpec kCascadeParams[] = {
     kEvsmNegativeParam,
     kEvsmMinVarianceParam,
 };
-inline constexpr ParamSpec kPcssParams[] = {
-    kLightAngleParam,
-    {"light_radius", "--light-radius", ParamKind::number, "0.1", "pcss, spot light: its radius in metres", 0, 100},
-};
+inline constexpr ParamSpec kPcssParams[] = {kLightAngleParam, kLightRadiusParam};
 
 // The irregular z-buffer (docs/irregular.md): samples per pixel and the grid's cell bound.
 inline constexpr ParamSpec kIrregularParams[] = {

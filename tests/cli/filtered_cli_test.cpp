@@ -24,6 +24,21 @@ TEST(CliFiltered, EachTechniqueRendersTheTutorial) {
   }
 }
 
+TEST(CliFiltered, PcssOnAPointLightsCubeMap) {
+  const auto dir = testsupport::temp_dir("cli_filtered_cube_pcss");
+  const testsupport::Outcome r = testsupport::shadowlab(
+      dir, "render paraboloid --size 64x36 --shadow-size 128 --threads 2 --out f.png --technique cube "
+           "--soft-shadows pcss --light-radius 0.2");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "f.png"));
+  const std::string cube = "render paraboloid --size 32x18 --out o.png --technique cube ";
+  // The size alone would do nothing; a filter PCSS replaces; the paraboloid map has no PCSS.
+  testsupport::expect_bad_run(dir, cube + "--light-radius 0.2", "--light-radius", "o.png");
+  testsupport::expect_bad_run(dir, cube + "--soft-shadows pcss --filter poisson", "lights[0].shadow.filter", "o.png");
+  testsupport::expect_bad_run(dir, "render paraboloid --size 32x18 --out o.png --technique paraboloid --soft-shadows pcss",
+                              "--soft-shadows", "o.png");
+}
+
 TEST(CliFiltered, BadSettingsNameTheirOption) {
   const auto dir = testsupport::temp_dir("cli_filtered_bad");
   const std::string render = "render tutorial --size 32x18 --out o.png ";

@@ -93,6 +93,7 @@ TEST(CliIsa, ScalarAndAvx2WriteTheSameBytes) {
       "render tutorial --technique irregular" + out,
       "render tutorial-spot --technique pcss" + out,
       "render paraboloid --technique cube" + out,
+      "render paraboloid --technique cube --soft-shadows pcss --light-radius 0.15" + out,
       "render paraboloid --technique paraboloid" + out,
       "render pyramid --technique pyramid" + out,
       "render projective" + out,

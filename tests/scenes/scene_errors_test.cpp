@@ -104,7 +104,7 @@ TEST(SceneErrors, UnknownNames) {
   EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "shadow": {"technique": "cube", "params": {"fit": "auto"}}}]})"),
             "scene.json: lights[0].shadow.params.fit: technique cube takes no parameter 'fit' (it takes: seamless, "
             "moments, esm_c, blur_radius, moment_mips, light_bleed, min_variance, evsm_positive, evsm_negative, "
-            "evsm_min_variance, pcf_taps, stratify, poisson_variant)");
+            "evsm_min_variance, soft_shadows, light_radius, pcf_taps, stratify, poisson_variant)");
   EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "shadow": {"params": {"seamless": 1}}}]})"),
             "scene.json: lights[0].shadow.params.seamless: expected true or false");
   EXPECT_EQ(json_error(R"({"lights": [{"type": "point", "shadow": {"poisson_taps": 8}}]})"),

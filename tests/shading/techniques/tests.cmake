@@ -23,6 +23,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/filtered_golden_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/pcss_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/cascade_pcss_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/cube_pcss_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/tutorial_poisson_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/tutorial_fit_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/irregular_cube_test.cpp
