@@ -79,16 +79,9 @@ float floor_z_at(float d) {
 // over 128 pixels (each its own turn of the disc) spread over ±0.25 m of z.
 float penumbra_width(const LightShadow& s, float z, float step, float reach) {
   const int rows = 128;
-  float x10 = NAN, x90 = NAN;
-  for (float x = -reach; x <= reach; x += step) {
-    float v = 0.0f;
-    for (int j = 0; j < rows; ++j)
-      v += visibility_at(s, {x, 0.0f, z - 0.25f + 0.5f * float(j) / rows}, {float(j * 7 + 3), float(j)});
-    v /= float(rows);
-    if (std::isnan(x10) && v >= 0.1f) x10 = x;
-    if (std::isnan(x90) && v >= 0.9f) x90 = x;
-  }
-  return x90 - x10;
+  return techtest::measured_width(reach, step, rows, [&](float x, int j, glm::vec2 frag) {
+    return visibility_at(s, {x, 0.0f, z - 0.25f + 0.5f * float(j) / rows}, frag);
+  });
 }
 
 TEST(CascadePcss, PenumbraInMetresIsTheSameInEverySliceAndLinearInDistance) {

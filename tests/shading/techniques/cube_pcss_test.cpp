@@ -67,18 +67,9 @@ float visibility_at(const LightShadow& s, glm::vec3 p, glm::vec2 frag = {0.0f, 0
 // 90 % crossings.
 float penumbra_width(const LightShadow& s, float step) {
   const int rows = 192;
-  float x10 = NAN, x90 = NAN;
-  for (float x = -1.5f; x <= 1.5f; x += step) {
-    float v = 0.0f;
-    for (int j = 0; j < rows; ++j) {
-      const float z = -0.5f + float(j) / rows;
-      v += visibility_at(s, {x, kFloor, z}, {float(j * 7 + 3), float(j)});
-    }
-    v /= float(rows);
-    if (std::isnan(x10) && v >= 0.1f) x10 = x;
-    if (std::isnan(x90) && v >= 0.9f) x90 = x;
-  }
-  return x90 - x10;
+  return techtest::measured_width(1.5f, step, rows, [&](float x, int j, glm::vec2 frag) {
+    return visibility_at(s, {x, kFloor, -0.5f + float(j) / rows}, frag);
+  });
 }
 
 TEST(CubePcss, PenumbraFollowsSimilarTriangles) {

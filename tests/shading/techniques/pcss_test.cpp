@@ -53,18 +53,9 @@ ClassicFit fixed_fit() {
 // pixels (each its own turn of the disc), and the distance between its 10 % and 90 % crossings.
 float penumbra_width(const Built& b, float y, float step) {
   const int rows = 256;
-  float x10 = NAN, x90 = NAN;
-  for (float x = -1.0f; x <= 1.0f; x += step) {
-    float v = 0.0f;
-    for (int j = 0; j < rows; ++j) {
-      const float z = -1.0f + 2.0f * float(j) / rows;
-      v += pcss_visibility(b.reader, {x, y, z}, {0, 1, 0}, {float(j * 7 + 3), float(j)});
-    }
-    v /= float(rows);
-    if (std::isnan(x10) && v >= 0.1f) x10 = x;
-    if (std::isnan(x90) && v >= 0.9f) x90 = x;
-  }
-  return x90 - x10;
+  return techtest::measured_width(1.0f, step, rows, [&](float x, int j, glm::vec2 frag) {
+    return pcss_visibility(b.reader, {x, y, -1.0f + 2.0f * float(j) / rows}, {0, 1, 0}, frag);
+  });
 }
 
 TEST(Pcss, PenumbraGrowsLinearlyWithReceiverBlockerDistance) {

@@ -27,4 +27,19 @@ inline float ideal_pcss_width(float k) {
   return x90 - x10;
 }
 
+// A measured profile's 10-90 % width: x steps from -reach to reach; at each, the visibility is averaged over
+// `rows` pixels, vis(x, j) being pixel j's (each pixel its own turn of the disc, frag (7 j + 3, j)).
+template <class Vis>
+float measured_width(float reach, float step, int rows, Vis vis) {
+  float x10 = NAN, x90 = NAN;
+  for (float x = -reach; x <= reach; x += step) {
+    float v = 0.0f;
+    for (int j = 0; j < rows; ++j) v += vis(x, j, glm::vec2(float(j * 7 + 3), float(j)));
+    v /= float(rows);
+    if (std::isnan(x10) && v >= 0.1f) x10 = x;
+    if (std::isnan(x90) && v >= 0.9f) x90 = x;
+  }
+  return x90 - x10;
+}
+
 }  // namespace techtest
