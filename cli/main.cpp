@@ -8,6 +8,10 @@
 #include <cstdlib>
 #include <cstring>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
+#endif
+
 // One declaration per set built (CMake defines SHADOWLAB_HAVE_ISA_<SET>); the definitions are cli/run.cpp's
 // `cli::run` in the set's namespace.
 #if defined(SHADOWLAB_HAVE_ISA_AVX2)
@@ -25,13 +29,26 @@ namespace {
 
 constexpr int kExitBadInput = 2;
 
-// Everything raster/simd/isa.h's AVX2 target enables. libgcc's check of "avx2" includes the operating system's
-// support for the 256-bit registers (XGETBV), so a hypervisor that hides them also hides AVX2 here.
+// Everything raster/simd/isa.h's AVX2 target enables, read from CPUID (GCC's and clang's
+// __builtin_cpu_supports do not all know LZCNT and F16C): AVX2, FMA, BMI1, BMI2, LZCNT, F16C, and the operating
+// system's support for the 256-bit registers (OSXSAVE and XCR0's SSE and AVX state), without which a hypervisor
+// may report AVX2 that cannot be used.
 bool cpu_has_avx2() {
 #if defined(__x86_64__) || defined(__i386__)
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
-         __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("lzcnt") && __builtin_cpu_supports("f16c");
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  if (__get_cpuid_max(0, nullptr) < 7) return false;
+  __cpuid_count(1, 0, a, b, c, d);
+  const bool fma = c & (1u << 12), osxsave = c & (1u << 27), avx = c & (1u << 28), f16c = c & (1u << 29);
+  if (!(fma && osxsave && avx && f16c)) return false;
+  unsigned xcr0_lo = 0, xcr0_hi = 0;
+  __asm__ volatile("xgetbv" : "=a"(xcr0_lo), "=d"(xcr0_hi) : "c"(0));
+  if ((xcr0_lo & 0x6u) != 0x6u) return false;
+  __cpuid_count(7, 0, a, b, c, d);
+  const bool bmi1 = b & (1u << 3), avx2 = b & (1u << 5), bmi2 = b & (1u << 8);
+  if (!(bmi1 && avx2 && bmi2)) return false;
+  if (__get_cpuid_max(0x80000000u, nullptr) < 0x80000001u) return false;
+  __cpuid_count(0x80000001u, 0, a, b, c, d);
+  return c & (1u << 5);  // LZCNT (ABM)
 #else
   return false;
 #endif
