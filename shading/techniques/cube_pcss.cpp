@@ -46,12 +46,11 @@ float cube_pcss_visibility(const OmniReader& r, const CubePcss& c, glm::vec3 p, 
   const float texel = 2.0f / float(r.cube.size());
   // The receiver's plane (through the looked-up point, normal n) along a tap's direction, as a reference: its
   // distance / range minus the bias, its rise from ref held to 0.01 per texel of the tap's offset.
-  const float den_limit = 1e-6f;
+  const float plane_offset = glm::dot(n, rel);  // the plane's n · (x − light), the same for every tap
   auto plane_ref = [&](glm::vec3 tap_dir, float offset_angle) {
     const float den = glm::dot(n, tap_dir);
-    const float num = glm::dot(n, rel);
-    if (!(std::abs(den) > den_limit)) return ref;
-    const float dist = num / den;
+    if (!(std::abs(den) > 1e-6f)) return ref;
+    const float dist = plane_offset / den;
     if (!(dist > 0.0f) || !std::isfinite(dist)) return ref;
     const float lim = 0.01f * offset_angle / texel;
     return ref + std::clamp(dist / r.range - o.bias - ref, -lim, lim);
