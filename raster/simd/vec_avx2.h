@@ -194,5 +194,16 @@ inline void transpose8(VecF32 (&r)[8]) {
   }
 }
 
+// ---- For the binning of large draws (bins.h). One 64-byte record, 32-byte aligned at both ends, copied with
+// non-temporal stores: the line goes to memory without being read first (no read for ownership) and without
+// evicting what the caches hold. Such stores are weakly ordered: stream_fence() before another thread reads them.
+inline void stream_line(void* dst, const void* src) {
+  const __m256i* s = static_cast<const __m256i*>(src);
+  __m256i* d = static_cast<__m256i*>(dst);
+  _mm256_stream_si256(d, _mm256_load_si256(s));
+  _mm256_stream_si256(d + 1, _mm256_load_si256(s + 1));
+}
+inline void stream_fence() { _mm_sfence(); }
+
 SHADOWLAB_ISA_END
 }  // namespace raster::simd

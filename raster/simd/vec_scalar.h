@@ -126,5 +126,9 @@ inline void transpose8(VecF32 (&r)[8]) {
   for (int i = 0; i < 8; ++i) r[i] = o[i];
 }
 
+// Plain copies: ordinary stores need no fence.
+inline void stream_line(void* dst, const void* src) { std::memcpy(dst, src, 64); }
+inline void stream_fence() {}
+
 SHADOWLAB_ISA_END
 }  // namespace raster::simd
