@@ -41,6 +41,8 @@ Options parse_options(int& argc, char** argv) {
     }
   }
   argc = out;
+  // Both renderers get the same explicit count: "the hardware's" is resolved here (llvmpipe takes no -1).
+  if (o.threads < 0) o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
   benchmark::Initialize(&argc, argv);
   return o;
 }
@@ -75,10 +77,12 @@ double MedianReporter::median_counter(const std::string& name, const std::string
   return c == it->second.end() ? 0.0 : c->second;
 }
 
-void print_scaling_row(const std::string& case_name, int threads, double shadowlab_ms, double llvmpipe_ms,
-                       double front_ms, double back_ms, double clear_cpu_ms) {
-  std::printf("@row %s %d %.4f %.4f %.4f %.4f %.4f\n", case_name.c_str(), threads, shadowlab_ms, llvmpipe_ms,
-              front_ms, back_ms, clear_cpu_ms);
+void print_scaling_row(const std::string& case_name, int threads, const MedianReporter& reporter) {
+  const std::string n = case_name + "/shadowlab";
+  auto counter = [&](const char* c) { return reporter.median_counter(n, c); };
+  std::printf("@row %s %d %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n", case_name.c_str(), threads, reporter.median_ms(n),
+              reporter.median_ms(case_name + "/llvmpipe"), counter("front_ms"), counter("back_ms"),
+              counter("clear_cpu_ms"), counter("front_busy_ms"), counter("back_busy_ms"));
 }
 
 namespace {
@@ -120,7 +124,7 @@ std::optional<int> run_scaling(int argc, char** argv) {
   struct Row {
     std::string name;
     int threads;
-    double sl, lp, front, back, clear;
+    double sl, lp, front, back, clear, front_busy, back_busy;
   };
   std::vector<Row> rows;
   int status = 0;
@@ -141,8 +145,8 @@ std::optional<int> run_scaling(int argc, char** argv) {
       if (std::strncmp(line, "@row ", 5) == 0) {
         char name[256];
         Row r{};
-        if (std::sscanf(line + 5, "%255s %d %lf %lf %lf %lf %lf", name, &r.threads, &r.sl, &r.lp, &r.front, &r.back,
-                        &r.clear) == 7) {
+        if (std::sscanf(line + 5, "%255s %d %lf %lf %lf %lf %lf %lf %lf", name, &r.threads, &r.sl, &r.lp, &r.front,
+                        &r.back, &r.clear, &r.front_busy, &r.back_busy) == 9) {
           r.name = name;
           rows.push_back(r);
         }
@@ -157,8 +161,10 @@ std::optional<int> run_scaling(int argc, char** argv) {
     if (std::find(names.begin(), names.end(), r.name) == names.end()) names.push_back(r.name);
   std::printf("\nScaling, %s (speed-up and efficiency against each renderer's time at %d thread(s)):\n",
               program.c_str(), counts.front());
-  std::printf("%-18s %7s %11s %11s %7s %8s %6s %8s %6s %9s %9s %9s\n", "case", "threads", "shadowlab", "llvmpipe",
-              "ratio", "SL x", "SL eff", "LP x", "LP eff", "front ms", "back ms", "clear cpu");
+  // "use": a phase's task time summed over workers / (threads × its wall time): how busy its workers were.
+  std::printf("%-18s %7s %11s %11s %7s %8s %6s %8s %6s %9s %9s %9s %9s %9s\n", "case", "threads", "shadowlab",
+              "llvmpipe", "ratio", "SL x", "SL eff", "LP x", "LP eff", "front ms", "front use", "back ms", "back use",
+              "clear cpu");
   std::ostringstream json;
   json << "{\n  \"program\": \"" << program << "\",\n  \"rows\": [";
   bool first = true;
@@ -170,15 +176,20 @@ std::optional<int> run_scaling(int argc, char** argv) {
       if (r.name != name) continue;
       const double t = std::max(r.threads, 1) / double(std::max(base->threads, 1));
       const double sx = r.sl > 0 ? base->sl / r.sl : 0, lx = r.lp > 0 ? base->lp / r.lp : 0;
-      std::printf("%-18s %7d %9.2fms %9.2fms %6.2fx %7.2fx %6.2f %7.2fx %6.2f %9.2f %9.2f %9.2f\n", name.c_str(),
-                  r.threads, r.sl, r.lp, r.sl > 0 && r.lp > 0 ? r.lp / r.sl : 0.0, sx, sx / t, lx, lx / t, r.front,
-                  r.back, r.clear);
+      const int workers = std::max(r.threads, 1);
+      const double front_use = r.front > 0 ? r.front_busy / (workers * r.front) : 0;
+      const double back_use = r.back > 0 ? r.back_busy / (workers * r.back) : 0;
+      std::printf("%-18s %7d %9.2fms %9.2fms %6.2fx %7.2fx %6.2f %7.2fx %6.2f %9.2f %9.2f %9.2f %9.2f %9.2f\n",
+                  name.c_str(), r.threads, r.sl, r.lp, r.sl > 0 && r.lp > 0 ? r.lp / r.sl : 0.0, sx, sx / t, lx,
+                  lx / t, r.front, front_use, r.back, back_use, r.clear);
       json << (first ? "" : ",") << "\n    {\"case\": \"" << name << "\", \"threads\": " << r.threads
            << ", \"shadowlab_ms\": " << r.sl << ", \"llvmpipe_ms\": " << r.lp
            << ", \"ratio\": " << (r.sl > 0 ? r.lp / r.sl : 0) << ", \"shadowlab_speedup\": " << sx
            << ", \"shadowlab_efficiency\": " << sx / t << ", \"llvmpipe_speedup\": " << lx
            << ", \"llvmpipe_efficiency\": " << lx / t << ", \"front_ms\": " << r.front
-           << ", \"back_ms\": " << r.back << ", \"clear_cpu_ms\": " << r.clear << "}";
+           << ", \"back_ms\": " << r.back << ", \"clear_cpu_ms\": " << r.clear
+           << ", \"front_busy_ms\": " << r.front_busy << ", \"back_busy_ms\": " << r.back_busy
+           << ", \"front_use\": " << front_use << ", \"back_use\": " << back_use << "}";
       first = false;
     }
   }

@@ -15,7 +15,7 @@
 namespace bench {
 
 struct Options {
-  int threads = -1;      // -1: the hardware's
+  int threads = -1;      // -1 (no --threads): the hardware's, resolved by parse_options
   bool smoke = false;    // one repetition, small workloads: for CI
   bool llvmpipe = true;  // also time Mesa llvmpipe
   int repetitions = 7;
@@ -28,10 +28,23 @@ struct Options {
 // --json-dir DIR also writes each run's Google Benchmark JSON (DIR/<program>_t<N>.json) and the table
 // (DIR/<program>_scaling.json). Returns the exit code when --scaling was given, nullopt otherwise.
 std::optional<int> run_scaling(int argc, char** argv);
-// What a program prints per case for run_scaling to collect: medians in ms, and shadowlab's draw split
-// (Renderer::last_timings, medians over the repetitions).
-void print_scaling_row(const std::string& case_name, int threads, double shadowlab_ms, double llvmpipe_ms,
-                       double front_ms, double back_ms, double clear_cpu_ms);
+// What a program prints per case for run_scaling to collect: the medians of "<case>/shadowlab" and
+// "<case>/llvmpipe" in ms, and of shadowlab's draw split (the counters record_draw_timings sets).
+class MedianReporter;
+void print_scaling_row(const std::string& case_name, int threads, const MedianReporter& reporter);
+
+// Records a shadowlab repetition's draw split (raster::DrawTimings, Renderer::last_timings) as counters, one
+// iteration per repetition: front_ms, back_ms (wall), clear_cpu_ms, front_busy_ms, back_busy_ms (summed over
+// workers), chunks.
+template <class Timings>
+void record_draw_timings(benchmark::State& st, const Timings& dt) {
+  st.counters["front_ms"] = dt.front_ms;
+  st.counters["back_ms"] = dt.back_ms;
+  st.counters["clear_cpu_ms"] = dt.clear_cpu_ms;
+  st.counters["front_busy_ms"] = dt.front_busy_ms;
+  st.counters["back_busy_ms"] = dt.back_busy_ms;
+  st.counters["chunks"] = double(dt.chunks);
+}
 
 // Reads and removes shadowlab's own flags from argv, then initialises Google Benchmark with the rest.
 Options parse_options(int& argc, char** argv);

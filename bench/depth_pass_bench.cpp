@@ -4,8 +4,8 @@
 // case; --benchmark_format=json for machine-readable output) and then a ratio table.
 // With --verify it first renders every case once with both and reports, per case, the pixels whose stored depth
 // differs (covered by one only, or any bit of the value) and a hash of shadowlab's map, then exits.
-// Each shadowlab repetition also reports where its draw's time went (counters front_ms, back_ms, clear_cpu_ms in
-// the JSON output: Renderer::last_timings). --scaling runs the whole program at 1, 2, 4, … threads (bench_common.h).
+// Each shadowlab repetition also reports where its draw's time went (counters front_ms, back_ms, clear_cpu_ms,
+// front_busy_ms, back_busy_ms, chunks in the JSON output: Renderer::last_timings). --scaling runs the whole program at 1, 2, 4, … threads (bench_common.h).
 //   shadowlab_bench_depth [--threads N] [--smoke] [--no-llvmpipe] [--verify] [--repetitions R]
 //                         [--scaling [LIST]] [--json-dir DIR] [benchmark flags]
 #include <benchmark/benchmark.h>
@@ -136,11 +136,7 @@ int main(int argc, char** argv) {
         st.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       }
       counters(st);
-      const raster::DrawTimings& dt = renderer.last_timings();  // one iteration per repetition
-      st.counters["front_ms"] = dt.front_ms;
-      st.counters["back_ms"] = dt.back_ms;
-      st.counters["clear_cpu_ms"] = dt.clear_cpu_ms;
-      st.counters["chunks"] = double(dt.chunks);
+      bench::record_draw_timings(st, renderer.last_timings());  // one iteration per repetition
     });
     bench::configure(b, opt);
     if (gl) {
@@ -173,15 +169,14 @@ int main(int argc, char** argv) {
     std::printf("%-16s %12.2f %12.2f %10.2f %10.2f %10.3f %10.3f %7.2fx\n", w.name.c_str(), sl, lp, rate(tris, sl),
                 rate(tris, lp), rate(w.pixels, sl) * 1e-3, rate(w.pixels, lp) * 1e-3, sl > 0 && lp > 0 ? lp / sl : 0.0);
   }
-  std::printf("\nshadowlab's draw, medians: front end / back end ms (wall), clear ms (summed over workers)\n");
+  std::printf("\nshadowlab's draw, medians: front end / back end ms (wall), and the time spent in each phase's "
+              "tasks and in the clear (summed over workers)\n");
   for (const Workload& w : workloads) {
     const std::string n = w.name + "/shadowlab";
-    const double f = reporter.median_counter(n, "front_ms"), b = reporter.median_counter(n, "back_ms");
-    const double c = reporter.median_counter(n, "clear_cpu_ms");
-    std::printf("%-16s %8.2f / %8.2f, clear %6.2f, %g chunks\n", w.name.c_str(), f, b, c,
-                reporter.median_counter(n, "chunks"));
-    bench::print_scaling_row(w.name, renderer.threads(), reporter.median_ms(n),
-                             reporter.median_ms(w.name + "/llvmpipe"), f, b, c);
+    auto m = [&](const char* counter) { return reporter.median_counter(n, counter); };
+    std::printf("%-16s %8.2f / %8.2f, busy %8.2f / %8.2f, clear %6.2f, %g chunks\n", w.name.c_str(), m("front_ms"),
+                m("back_ms"), m("front_busy_ms"), m("back_busy_ms"), m("clear_cpu_ms"), m("chunks"));
+    bench::print_scaling_row(w.name, renderer.threads(), reporter);
   }
   return 0;
 }

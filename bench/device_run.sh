@@ -7,6 +7,8 @@
 # THREADS=1,2,4,8,16 (default) picks the counts, REPS=7 the repetitions per case (the two renderers' repetitions
 # interleaved, as in README's table); SMOKE=1 runs a quick check
 # only (small workloads, 1 and 2 threads, with the loader's trace in OUT_DIR/ld_debug.log).
+# BEFORE=DIR compares instead: the depth-only benchmark of another build (DIR/shadowlab_bench_depth, copied next to
+# run.sh, same libraries) against the bundle's, alternating ROUNDS=2 times at each count in THREADS (default 2,16).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 out=${1:-${OUT:-$here/out}}
@@ -44,6 +46,22 @@ export HOME="${HOME:-$tmp}"
 } > "$out/machine.txt" 2>&1
 
 status=0
+if [ -n "${BEFORE:-}" ]; then
+  before=$(cd "$BEFORE" && pwd)
+  for n in $(echo "${THREADS:-2,16}" | tr ',' ' '); do
+    for r in $(seq "${ROUNDS:-2}"); do
+      for side in before after; do
+        if [ $side = before ]; then prog=$before/shadowlab_bench_depth; else prog=$b/bin/shadowlab_bench_depth; fi
+        "$prog" --threads "$n" --repetitions "$reps" "$interleave" > "$out/ab_${side}_t${n}_r$r.log" 2>&1 || status=1
+        echo "== $side, $n thread(s), round $r"
+        sed -n '/^Depth-only pass/,/^$/p' "$out/ab_${side}_t${n}_r$r.log" | tail -n +2
+        grep '^[abc]_.*busy' "$out/ab_${side}_t${n}_r$r.log" || true
+      done
+    done
+  done
+  rm -rf "$tmp"
+  exit $status
+fi
 if [ "${SMOKE:-0}" = 1 ]; then
   LD_DEBUG=libs "$b/bin/shadowlab_bench_depth" --smoke --verify --threads 2 > "$out/smoke_verify.log" 2> "$out/ld_debug.log" || status=1
   cat "$out/smoke_verify.log"

@@ -125,9 +125,7 @@ int main(int argc, char** argv) {
         renderer.draw(raster::RenderTargets{nullptr, &color}, raster::DrawState{}, shader, std::span<const glm::vec4>(tri));
         st.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       }
-      const raster::DrawTimings& dt = renderer.last_timings();  // one iteration per repetition
-      st.counters["front_ms"] = dt.front_ms;
-      st.counters["back_ms"] = dt.back_ms;
+      bench::record_draw_timings(st, renderer.last_timings());  // one iteration per repetition
     });
     bench::configure(b, opt);
     if (gl) {
@@ -153,10 +151,6 @@ int main(int argc, char** argv) {
     const double lp = reporter.median_ms(std::string(c) + "/llvmpipe");
     std::printf("%-16s %12.2f %12.2f %7.2fx\n", c, sl, lp, sl > 0 && lp > 0 ? lp / sl : 0.0);
   }
-  for (const char* c : {"no_lookup", "pcf_1_tap", "poisson_16_taps"}) {
-    const std::string n = std::string(c) + "/shadowlab";
-    bench::print_scaling_row(c, renderer.threads(), reporter.median_ms(n), reporter.median_ms(std::string(c) + "/llvmpipe"),
-                             reporter.median_counter(n, "front_ms"), reporter.median_counter(n, "back_ms"), 0.0);
-  }
+  for (const char* c : {"no_lookup", "pcf_1_tap", "poisson_16_taps"}) bench::print_scaling_row(c, renderer.threads(), reporter);
   return 0;
 }
