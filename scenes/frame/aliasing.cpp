@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include "raster/parallel_clear.h"
 #include "raster/simd/isa.h"
 
 namespace frame {
@@ -86,7 +87,7 @@ std::vector<AliasingImage> measure_aliasing(const scenes::Scene& scene, const gl
     img.ratio.assign(size_t(w) * size_t(h), kUnmeasured);
     if (l.shadow) {
       raster::ColorTarget target(w, h, raster::ColorFormat::rgba32f);
-      target.clear(glm::vec4(kUnmeasured, 0.0f, 0.0f, 0.0f));
+      raster::clear_on_workers(target, glm::vec4(kUnmeasured, 0.0f, 0.0f, 0.0f), renderer.pool());
       for (const scenes::Instance& inst : scene.instances) {
         if (!inst.receives_shadows) continue;
         const scenes::Mesh& mesh = scene.meshes.at(inst.mesh);

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "raster/parallel_clear.h"
 #include "raster/target.h"
 #include "scenes/frame/surface_record.h"
 #include "scenes/scene_queries.h"
@@ -48,7 +49,7 @@ shading::tech::CameraSurface camera_surface(const scenes::Scene& scene,
   raster::DepthTarget depth(width, height, raster::DepthFormat::d24);
   depth.clear(1.0f);
   raster::ColorTarget color(width, height, raster::ColorFormat::rgba8);  // written, never read
-  color.clear(glm::vec4(0.0f));
+  raster::clear_on_workers(color, glm::vec4(0.0f), renderer.pool());
   CameraShader shader;
   shader.record = &record;
   shader.u.view_proj = view_proj;

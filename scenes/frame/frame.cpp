@@ -12,6 +12,7 @@
 
 #include <glm/matrix.hpp>
 
+#include "raster/parallel_clear.h"
 #include "raster/quad_path_only.h"
 #include "scenes/camera_math.h"
 #include "scenes/frame/camera_shader.h"
@@ -258,7 +259,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
     depth_slot.emplace(config.width, config.height, raster::DepthFormat::d24);
   raster::DepthTarget& depth = *depth_slot;
   depth.clear(1.0f);                      // pending: each tile is cleared by the draw that first touches it
-  frame.radiance.clear(glm::vec4(0.0f));  // alpha 0: the background shows
+  raster::clear_on_workers(frame.radiance, glm::vec4(0.0f), renderer.pool());  // alpha 0: the background shows
   std::vector<std::vector<CameraVertex>> mesh_vertices(scene.meshes.size());
   std::vector<std::vector<TexturedCameraVertex>> mesh_textured(scene.meshes.size());  // textured draws only
   frame.view_proj = view_proj;

@@ -14,6 +14,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "raster/parallel_clear.h"
 #include "raster/renderer.h"
 #include "shading/sampler.h"
 #include "shading/texture_cube.h"
@@ -127,7 +128,7 @@ raster::DrawStats draw_omni_passes(raster::Renderer& renderer, ShadowMapSet& set
                                    glm::vec4 clear_color = glm::vec4(1.0f)) {
   for (auto& t : set.targets) t->clear(1.0f);
   for (auto& c : set.colors)
-    if (c) c->clear(clear_color);
+    if (c) raster::clear_on_workers(*c, clear_color, renderer.pool());
   raster::DrawStats stats;
   for (size_t i = 0; i < set.passes.size(); ++i) {
     const ShadowPass& p = set.passes[i];

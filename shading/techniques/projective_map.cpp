@@ -7,6 +7,7 @@
 #include "shading/techniques/caster_decimate.h"
 #include "shading/techniques/masked_depth.h"
 #include "shading/techniques/offset_blur.h"
+#include "raster/parallel_clear.h"
 #include "raster/simd/isa.h"
 
 namespace shading::tech {
@@ -40,7 +41,7 @@ CasterMap build_caster_map(raster::Renderer& renderer, const ProjectiveLight& li
   m.frustum = fit_caster_frustum(light, bounds, size, ring);
   m.bounds = bounds;
   m.target = std::make_unique<raster::ColorTarget>(size, size, raster::ColorFormat::rgba8);
-  m.target->clear(glm::vec4(1.0f));
+  raster::clear_on_workers(*m.target, glm::vec4(1.0f), renderer.pool());
   const int inner = size - 2 * ring;
   if (m.frustum.valid && inner >= 1) {
     raster::DrawState s;

@@ -1,12 +1,15 @@
 // DepthTarget::clear() as a flag until first use: a draw clears every tile of the padded target on its workers
 // (inside and outside the draw's rectangle, with or without a back end that touches depth), any access through
 // the target clears it whole first, and the output is bit for bit that of an eager clear, at 0, 1, 2, 7 and 16
-// threads. Also the front end's split into chunks, which may not change any bit.
+// threads. Also the front end's split into chunks, which may not change any bit, and colour targets cleared on
+// a pool's workers (parallel_clear.h).
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cstring>
 
 #include "bench/triangle_soup.h"
+#include "raster/parallel_clear.h"
 #include "tests/raster/raster_test_util.h"
 
 using namespace raster;
@@ -118,6 +121,34 @@ TEST(Clear, ColorTargetsOfEveryFormatHoldTheClearedValueEverywhere) {
       for (int y = 0; y < t.padded_height(); ++y)
         for (int x = 0; x < t.pitch(); ++x) wrong += t.read(x, y) != expected;
       EXPECT_EQ(wrong, 0u) << "format " << int(f) << ", clear " << c.r;
+    }
+  }
+}
+
+// clear_on_workers (raster/parallel_clear.h) stores the bytes ColorTarget::clear stores, over the whole padded
+// storage (every row, padding included), for every format, sRGB, zero and non-zero values, at 0, 1, 2 and 7 threads.
+TEST(Clear, ColorTargetsClearedOnWorkersHoldTheBytesOfTheSerialClear) {
+  for (ColorFormat f : {ColorFormat::rgba8, ColorFormat::rgba32f, ColorFormat::rg32f, ColorFormat::r32f}) {
+    for (const glm::vec4 c : {glm::vec4(0.0f), glm::vec4(0.25f, 0.5f, 0.75f, 1.0f), glm::vec4(2.0f, -1.0f, 0.1f, 0.3f)}) {
+      for (bool srgb : {false, true}) {
+        if (srgb && f != ColorFormat::rgba8) continue;
+        ColorTarget serial(509, 1031, f, srgb);
+        serial.clear(c);
+        const size_t row_bytes = size_t(serial.pitch()) * bytes_per_texel(f);
+        auto row = [&](ColorTarget& t, int y) {
+          return t.channels() > 0 ? static_cast<const void*>(t.row32f(y)) : static_cast<const void*>(t.row8(y));
+        };
+        for (int threads : {0, 1, 2, 7}) {
+          ThreadPool pool(threads);
+          ColorTarget t(509, 1031, f, srgb);
+          t.clear(glm::vec4(0.9f, 0.8f, 0.7f, 0.6f));  // something else first, so every byte must be rewritten
+          clear_on_workers(t, c, pool);
+          int wrong_rows = 0;
+          for (int y = 0; y < t.padded_height(); ++y) wrong_rows += std::memcmp(row(t, y), row(serial, y), row_bytes) != 0;
+          EXPECT_EQ(wrong_rows, 0) << "format " << int(f) << ", clear " << c.r << ", srgb " << srgb << ", threads "
+                                   << threads;
+        }
+      }
     }
   }
 }
