@@ -7,8 +7,9 @@
 # THREADS=1,2,4,8,16 (default) picks the counts, REPS=7 the repetitions per case (the two renderers' repetitions
 # interleaved, as in README's table); SMOKE=1 runs a quick check
 # only (small workloads, 1 and 2 threads, with the loader's trace in OUT_DIR/ld_debug.log).
-# BEFORE=DIR compares instead: the depth-only benchmark of another build (DIR/shadowlab_bench_depth, copied next to
-# run.sh, same libraries) against the bundle's, alternating ROUNDS=2 times at each count in THREADS (default 2,16).
+# BEFORE=DIR compares instead: the depth-only benchmark of another build (DIR/shadowlab_bench_depth, DIR relative
+# to the current folder or to this script's; same libraries) against the bundle's, ROUNDS=2 rounds at each count
+# in THREADS (default 2,16), the two builds taking turns at going first.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 out=${1:-${OUT:-$here/out}}
@@ -17,8 +18,16 @@ out=$(cd "$out" && pwd)
 threads=${THREADS:-1,2,4,8,16}
 reps=${REPS:-7}
 interleave=--benchmark_enable_random_interleaving=true
+before=
+if [ -n "${BEFORE:-}" ]; then
+  for d in "$BEFORE" "$here/$BEFORE"; do
+    if [ -x "$d/shadowlab_bench_depth" ]; then before=$(cd "$d" && pwd); break; fi
+  done
+  [ -n "$before" ] || { echo "run.sh: no shadowlab_bench_depth in $BEFORE (nor in $here/$BEFORE)" >&2; exit 2; }
+fi
 
 tmp=$(mktemp -d /tmp/shadowlab-bundle.XXXXXX)
+trap 'rm -rf "$tmp"' EXIT
 if xz --version > /dev/null 2>&1; then
   xz -dc "$here/shadowlab-bundle.tar.xz" | tar -xf - -C "$tmp"
 else
@@ -46,20 +55,20 @@ export HOME="${HOME:-$tmp}"
 } > "$out/machine.txt" 2>&1
 
 status=0
-if [ -n "${BEFORE:-}" ]; then
-  before=$(cd "$BEFORE" && pwd)
+if [ -n "$before" ]; then
   for n in $(echo "${THREADS:-2,16}" | tr ',' ' '); do
     for r in $(seq "${ROUNDS:-2}"); do
-      for side in before after; do
+      order="before after"
+      [ $((r % 2)) = 0 ] && order="after before"
+      for side in $order; do
         if [ $side = before ]; then prog=$before/shadowlab_bench_depth; else prog=$b/bin/shadowlab_bench_depth; fi
         "$prog" --threads "$n" --repetitions "$reps" "$interleave" > "$out/ab_${side}_t${n}_r$r.log" 2>&1 || status=1
         echo "== $side, $n thread(s), round $r"
         sed -n '/^Depth-only pass/,/^$/p' "$out/ab_${side}_t${n}_r$r.log" | tail -n +2
-        grep '^[abc]_.*busy' "$out/ab_${side}_t${n}_r$r.log" || true
+        grep '^[abc]_[^/ ]* .*, busy ' "$out/ab_${side}_t${n}_r$r.log" || true
       done
     done
   done
-  rm -rf "$tmp"
   exit $status
 fi
 if [ "${SMOKE:-0}" = 1 ]; then
@@ -72,7 +81,6 @@ if [ "${SMOKE:-0}" = 1 ]; then
   "$b/bin/shadowlab_bench_depth" --smoke --scaling 1,2 --json-dir "$out" > "$out/smoke_depth.log" 2>&1 || status=1
   "$b/bin/shadowlab_bench_pcf" --smoke --scaling 1,2 --json-dir "$out" > "$out/smoke_pcf.log" 2>&1 || status=1
   sed -n '/^Scaling/,$p' "$out/smoke_depth.log" "$out/smoke_pcf.log"
-  rm -rf "$tmp"
   echo "smoke test: $([ $status = 0 ] && echo passed || echo FAILED), logs in $out"
   exit $status
 fi
@@ -88,6 +96,5 @@ sed -n '/^Scaling/,$p' "$out/depth.log"
 echo "== PCF pass"
 "$b/bin/shadowlab_bench_pcf" --scaling "$threads" --repetitions "$reps" "$interleave" --json-dir "$out" > "$out/pcf.log" 2>&1 || status=1
 sed -n '/^Scaling/,$p' "$out/pcf.log"
-rm -rf "$tmp"
 echo "done: $([ $status = 0 ] && echo all passed || echo 'something FAILED (see the logs)'), logs and JSON in $out"
 exit $status

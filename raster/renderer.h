@@ -113,11 +113,12 @@ inline constexpr size_t kMaxChunkTriangles = 8192;
 inline constexpr size_t kMinChunkTriangles = 256;
 inline constexpr size_t kChunksPerWorker = 4;
 inline constexpr unsigned kInvalidVertex = 1u << 31;
-// A depth-only draw of at least this many bytes of one-line records bins them with non-temporal stores
-// (ChunkBins::bin): its records are out of the caches by the time the tiles read them anyway, and the scatter
-// over every tile's slice no longer reads each line before writing it. Measured on the 2-core AMD EPYC at 2
-// threads (2026-11-27, three runs each): front end of 10^6 triangles of ~10 px 53-63 -> 37-45 ms, of 2·10^4 of
-// ~2000 px 3.0-3.3 -> 1.8-2.0 ms, the back ends unchanged within the noise. Smaller draws keep cached records.
+// A depth-only draw whose triangles, counted as submitted, would take at least this many bytes of one-line
+// records (ntri × sizeof(DepthSetup)) bins them with non-temporal stores (ChunkBins::bin): its records are out
+// of the caches by the time the tiles read them anyway, and the scatter over every tile's slice no longer reads
+// each line before writing it. Measured on the 2-core AMD EPYC at 2 threads (2026-11-27, three runs each): front
+// end of 10^6 triangles of ~10 px 53-63 -> 37-45 ms, of 2·10^4 of ~2000 px 3.0-3.3 -> 1.8-2.0 ms, the back ends
+// unchanged within the noise. Smaller draws keep cached records.
 inline constexpr size_t kStreamBinsBytes = size_t(1) << 20;
 
 inline size_t chunk_triangles(size_t ntri, int threads) {
