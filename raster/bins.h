@@ -54,23 +54,22 @@ struct ChunkBins {
     binned.resize(offsets.back());
     std::vector<uint32_t>& cursor = scratch_;
     cursor.assign(offsets.begin(), offsets.end() - 1);
+    // Every record to each tile it touches, put(at, record) writing it at binned[at].
+    auto scatter = [&](auto&& put) {
+      for (const Record& t : setups) {
+        const int k = single_tile(t, grid);
+        if (k >= 0) put(cursor[size_t(k)]++, t);
+        else for_each_tile(t, grid, [&](int j) { put(cursor[size_t(j)]++, t); });
+      }
+    };
     if constexpr (sizeof(Record) == 64 && alignof(Record) == 64) {
       if (stream) {
-        auto put = [&](size_t at, const Record& t) { simd::stream_line(&binned[at], &t); };
-        for (const Record& t : setups) {
-          const int k = single_tile(t, grid);
-          if (k >= 0) put(cursor[size_t(k)]++, t);
-          else for_each_tile(t, grid, [&](int j) { put(cursor[size_t(j)]++, t); });
-        }
+        scatter([&](size_t at, const Record& t) { simd::stream_line(&binned[at], &t); });
         simd::stream_fence();
         return;
       }
     }
-    for (const Record& t : setups) {
-      const int k = single_tile(t, grid);
-      if (k >= 0) binned[cursor[size_t(k)]++] = t;
-      else for_each_tile(t, grid, [&](int j) { binned[cursor[size_t(j)]++] = t; });
-    }
+    scatter([&](size_t at, const Record& t) { binned[at] = t; });
   }
 
   // The tile holding the triangle's whole box, or -1 when the box spans several.

@@ -9,6 +9,8 @@
 #include <new>
 
 #include "raster/limits.h"
+#include "raster/parallel_clear.h"
+#include "raster/thread_pool.h"
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -160,15 +162,9 @@ ColorTarget::ColorTarget(int width, int height, ColorFormat format, bool srgb)
 }
 
 void ColorTarget::clear(const glm::vec4& c) {
-  // One texel as write() stores it, then copied over the whole padded storage (a frame's radiance is 15 MB).
-  write(0, 0, c);
-  const size_t texel = bytes_per_texel(format_), texels = size_t(pitch_) * size_t(padded_height_);
-  std::byte* p = storage_.data();
-  if (std::all_of(p, p + texel, [](std::byte b) { return b == std::byte{0}; })) {
-    std::memset(p, 0, texel * texels);
-    return;
-  }
-  for (size_t i = 1; i < texels; ++i) std::memcpy(p + i * texel, p, texel);
+  // The workers' clear (parallel_clear.h) run inline on the calling thread: one way to store the value.
+  ThreadPool inline_pool(0);
+  clear_on_workers(*this, c, inline_pool);
 }
 
 glm::vec4 ColorTarget::read(int x, int y) const {
