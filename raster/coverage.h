@@ -56,8 +56,9 @@ inline bool is_narrow(const TriangleSetup& t) { return t.flags & kNarrowEdges; }
 // The block walk shared by both stage kinds over the pixels [x0, x1] × [y0, y1] of one tile. Each edge's exact
 // int64 value is stepped from block to block (g = F at the block's corner where F is largest, so the block lies
 // outside the edge when g < 0 and the edge crosses it when g < its range over the block); visit(bx, by, row_lo,
-// row_hi, block) is called for every block not outside an edge, `block` saying which edges cross it and giving
-// their exact values at its first row.
+// row_hi, block) is called for every block not outside an edge and not skipped, `block` saying which edges cross
+// it and giving their exact values at its first row. skip(by) gives the blocks of a block row to leave out, bit i
+// for the block at the tile's i-th block column.
 struct WalkedBlock {
   bool crosses[3];
   int64_t g[3], to_start[3];
@@ -69,10 +70,15 @@ struct WalkedBlock {
   }
 };
 
-template <class Tri, class Visit>
-inline void walk_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, Visit&& visit) {
+// The block column of the tile that holds pixel column x.
+inline unsigned tile_block_column(int32_t x) { return unsigned(x >> kBlockSizeLog2) & (kTileSize / kBlockSize - 1); }
+
+template <class Tri, class Skip, class Visit>
+inline void walk_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, Skip&& skip, Visit&& visit) {
   constexpr int64_t kSpan = kBlockSize - 1;
   const int32_t bx0 = x0 & ~(kBlockSize - 1), by0 = y0 & ~(kBlockSize - 1);
+  // The rectangle's block columns, as skip() numbers them.
+  const unsigned columns = lane_range_mask(int(tile_block_column(bx0)), int(tile_block_column(x1)));
   int64_t g_row[3], range[3], step_x[3], step_y[3];
   WalkedBlock w;
   for (int k = 0; k < 3; ++k) {
@@ -84,16 +90,18 @@ inline void walk_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_
     step_x[k] = a * kBlockSize;
     step_y[k] = b * kBlockSize;
   }
-  for (int32_t by = by0; by <= y1; by += kBlockSize) {
+  for (int32_t by = by0; by <= y1; by += kBlockSize, g_row[0] += step_y[0], g_row[1] += step_y[1], g_row[2] += step_y[2]) {
+    const unsigned skipped = skip(by) & columns;
+    if (skipped == columns) continue;
     const int row_lo = std::max(y0 - by, 0), row_hi = std::min(y1 - by, kBlockSize - 1);
     int64_t g0 = g_row[0], g1 = g_row[1], g2 = g_row[2];
     for (int32_t bx = bx0; bx <= x1; bx += kBlockSize, g0 += step_x[0], g1 += step_x[1], g2 += step_x[2]) {
       if ((g0 | g1 | g2) < 0) continue;  // outside an edge
+      if (skipped >> tile_block_column(bx) & 1u) continue;
       w.g[0] = g0, w.g[1] = g1, w.g[2] = g2;
       w.crosses[0] = g0 < range[0], w.crosses[1] = g1 < range[1], w.crosses[2] = g2 < range[2];
       visit(bx, by, row_lo, row_hi, static_cast<const WalkedBlock&>(w));
     }
-    for (int k = 0; k < 3; ++k) g_row[k] += step_y[k];
   }
 }
 
@@ -102,8 +110,8 @@ inline void walk_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_
 template <class Tri, class Stage>
 inline void rasterize_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const Stage& stage) {
   const auto hiz = stage.hiz_plane(t, PixelRect{x0, y0, x1, y1});
-  walk_blocks(t, x0, y0, x1, y1, [&](int32_t bx, int32_t by, int row_lo, int row_hi, const WalkedBlock& blk) {
-    if (stage.block_hidden(hiz, bx, by)) return;
+  auto hidden = [&](int32_t by) { return stage.hidden_blocks(hiz, by); };
+  walk_blocks(t, x0, y0, x1, y1, hidden, [&](int32_t bx, int32_t by, int row_lo, int row_hi, const WalkedBlock& blk) {
     const simd::Mask lanes =
         simd::Mask::from_bits(lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1)));
     const auto cols = stage.columns(t, bx);
@@ -139,7 +147,8 @@ inline uint64_t block_rows_mask(unsigned lanes, int row_lo, int row_hi) {
 template <class Stage>
 inline void rasterize_block_masks(const TriangleSetup& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
                                   const Stage& stage) {
-  walk_blocks(t, x0, y0, x1, y1, [&](int32_t bx, int32_t by, int row_lo, int row_hi, const WalkedBlock& blk) {
+  auto none = [](int32_t) { return 0u; };
+  walk_blocks(t, x0, y0, x1, y1, none, [&](int32_t bx, int32_t by, int row_lo, int row_hi, const WalkedBlock& blk) {
     const unsigned lanes = lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1));
     if (blk.accepted()) {
       stage.block(t, bx, by, block_rows_mask(lanes, row_lo, row_hi));
@@ -160,7 +169,7 @@ inline void rasterize_block_masks(const TriangleSetup& t, int32_t x0, int32_t y0
 // Rasterizes one triangle within `r` (a rectangle inside one tile) and hands covered pixels to the stage.
 // A row stage (depth-only) has columns(t, x), cursor(x, y) / next_row(cursor), row(columns, cursor, Mask,
 // BlockMax&), and hiz_plane /
-// block_hidden / block_done around each block (hierarchical depth), and gets one 8-lane segment per row; narrow
+// hidden_blocks / block_done around each block (hierarchical depth), and gets one 8-lane segment per row; narrow
 // triangles (at most 8 pixels wide within `r`) take one segment placed inside the tile, others go through 8×8
 // blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks. A row stage takes
 // either record (TriangleSetup or DepthSetup), a block stage a TriangleSetup.

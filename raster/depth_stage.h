@@ -77,13 +77,14 @@ struct DepthOnlyStage {
     if constexpr (kHiZ) return make_hiz_plane(t, r);
     return {};
   }
-  bool block_hidden(const HiZPlane& hp, int32_t bx, int32_t by) const {
+  // The blocks of the tile's block row at `by` the triangle cannot pass (TileHiZ::hidden), bit i for the
+  // block at the tile's x0 + 8·i.
+  unsigned hidden_blocks(const HiZPlane& hp, int32_t by) const {
     if constexpr (kHiZ) {
-      const float zmin = hp.min_depth(bx, by), zmax = hiz->farthest(bx, by);
       constexpr bool kStrict = std::is_same_v<Compare, FixedDepthFunc<DepthFunc::less>>;
-      return kStrict ? zmin >= zmax : zmin > zmax;
+      return hiz->template hidden<kStrict>(hp.row(hiz->x0(), by), by);
     }
-    return false;
+    return 0;
   }
 
   // After the rows in `rows_done` (bit r: row by + r) of a block were handed to row() with `bm`: the block's

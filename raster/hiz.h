@@ -40,6 +40,17 @@ class TileHiZ {
     return zmax_[(by - y0_) >> kBlockSizeLog2][(bx - x0_) >> kBlockSizeLog2];
   }
 
+  // The blocks of the block row at `by` that a triangle with lower bounds `lower` (HiZPlane::row at the tile's
+  // x0) cannot pass, bit i for the block at x0 + 8·i: with LESS (kStrict) where the bound is not nearer than the
+  // block's farthest depth, with LEQUAL where it is farther. A NaN on either side hides nothing.
+  template <bool kStrict>
+  unsigned hidden(simd::VecF32 lower, int32_t by) const {
+    static_assert(kBlocks == simd::kLanes);
+    const simd::VecF32 far = simd::VecF32::load(zmax_[(by - y0_) >> kBlockSizeLog2]);
+    return (kStrict ? simd::cmp_le(far, lower) : simd::cmp_lt(far, lower)).bits();
+  }
+  int32_t x0() const { return x0_; }
+
   // Recomputes one block's bound after writes.
   void refresh(const DepthTarget& d, int32_t bx, int32_t by) { update(d, bx, by, simd::VecF32::splat(0.0f), 0u); }
 
@@ -55,19 +66,26 @@ class TileHiZ {
 
  private:
   int32_t x0_ = 0, y0_ = 0;
-  float zmax_[kBlocks][kBlocks];
+  alignas(32) float zmax_[kBlocks][kBlocks];
 };
 
-// A lower bound of the triangle's clamped depth over any 8×8 block at (bx, by) of a rectangle: the plane at the
-// block's corner where it is smallest, less a margin for the rounding of the per-pixel evaluation (two fused
-// multiply-adds and an add whose operands are bounded by `scale`, so each rounds by at most scale · 2^-24; 2^-21
-// covers them). `scale` is taken at the rectangle's far corner, which bounds it for every block inside, so the
-// per-block work is two multiply-adds; the double arithmetic's own rounding (2^-53 relative) is far inside the
-// margin's slack.
+// A lower bound of the triangle's clamped depth over every 8×8 block of one block row of a rectangle, eight
+// blocks at a time: the plane at each block's corner where it is smallest, less a margin for rounding. The
+// margin covers two things, each bounded through `scale`, which bounds |z| and every partial sum at any pixel
+// of a block inside the rectangle (taken at its far corner): the per-pixel evaluation of the stage (two fused
+// multiply-adds and an add, each rounding by at most scale · 2^-24, so 3 · 2^-24 in all), and this bound's own
+// float evaluation (the row's start rounded from double to float and one fused multiply-add per lane: 2 · 2^-24;
+// the double arithmetic before it rounds by 2^-53 relative). 2^-21 = 8 · 2^-24 covers both with room. Lanes for
+// block columns outside the rectangle hold values nobody reads.
 struct HiZPlane {
-  double z0 = 0.0, dx = 0.0, dy = 0.0;
-  float min_depth(int32_t bx, int32_t by) const {
-    return float(std::clamp(z0 + dx * double(bx) + dy * double(by), 0.0, 1.0));
+  double z0 = 0.0, dx = 0.0, dy = 0.0;  // the bound at block (0, 0) and its slopes per pixel
+  float dx_block = 0.0f;                // the bound's step from one block column to the next (exact: 8 · a float)
+
+  // The lower bounds of the blocks (x0 + 8·l, by), lane l.
+  simd::VecF32 row(int32_t x0, int32_t by) const {
+    const float start = float(z0 + dx * double(x0) + dy * double(by));
+    const simd::VecF32 z = simd::fma(simd::VecF32::splat(dx_block), simd::VecF32::iota(), simd::VecF32::splat(start));
+    return simd::min(simd::max(z, simd::VecF32::splat(0.0f)), simd::VecF32::splat(1.0f));
   }
 };
 
@@ -81,6 +99,7 @@ inline HiZPlane make_hiz_plane(const Tri& t, const PixelRect& r) {
   p.dx = double(t.dzdx);
   p.dy = double(t.dzdy);
   p.z0 = double(t.z_a0) + double(t.z_offset) + p.dx * cx + p.dy * cy - scale * 0x1p-21;
+  p.dx_block = t.dzdx * float(kBlockSize);
   return p;
 }
 

@@ -12,6 +12,15 @@
 
 namespace rtest {
 
+// A window vertex at sub-pixel position (sx, sy) with depth z, as triangle setup takes it (w = 1).
+inline raster::WindowVertex snapped_vertex(int32_t sx, int32_t sy, float z) {
+  raster::WindowVertex v{};
+  v.x = float(sx) / float(raster::kSubpixelScale), v.y = float(sy) / float(raster::kSubpixelScale), v.z = z;
+  v.inv_w = 1.0f;
+  v.sx = sx, v.sy = sy;
+  return v;
+}
+
 // Window point (x, y) of a W×H viewport at origin 0, as a clip-space position with the given w.
 inline glm::vec4 win_to_clip(double x, double y, int w, int h, double z_ndc = 0.0, double cw = 1.0) {
   return glm::vec4(float((x / w * 2.0 - 1.0) * cw), float((y / h * 2.0 - 1.0) * cw), float(z_ndc * cw), float(cw));
