@@ -79,6 +79,7 @@ double MedianReporter::median_counter(const std::string& name, const std::string
 
 void print_scaling_row(const std::string& case_name, int threads, const MedianReporter& reporter) {
   const std::string n = case_name + "/shadowlab";
+  if (reporter.median_ms(n) == 0 && reporter.median_ms(case_name + "/llvmpipe") == 0) return;  // filtered out
   auto counter = [&](const char* c) { return reporter.median_counter(n, c); };
   std::printf("@row %s %d %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n", case_name.c_str(), threads, reporter.median_ms(n),
               reporter.median_ms(case_name + "/llvmpipe"), counter("front_ms"), counter("back_ms"),

@@ -29,7 +29,8 @@ struct Options {
 // (DIR/<program>_scaling.json). Returns the exit code when --scaling was given, nullopt otherwise.
 std::optional<int> run_scaling(int argc, char** argv);
 // What a program prints per case for run_scaling to collect: the medians of "<case>/shadowlab" and
-// "<case>/llvmpipe" in ms, and of shadowlab's draw split (the counters record_draw_timings sets).
+// "<case>/llvmpipe" in ms, and of shadowlab's draw split (the counters record_draw_timings sets); nothing for a
+// case that did not run (filtered out).
 class MedianReporter;
 void print_scaling_row(const std::string& case_name, int threads, const MedianReporter& reporter);
 
@@ -63,6 +64,9 @@ class MedianReporter : public benchmark::ConsoleReporter {
   double median_ms(const std::string& name) const;
   // The median of a user counter (0 when absent).
   double median_counter(const std::string& name, const std::string& counter) const;
+  // Whether any benchmark ran: false for --benchmark_list_tests or a filter that matches nothing, when the
+  // summary tables after the run have nothing to show.
+  bool any_ran() const { return !median_ms_.empty(); }
 
  private:
   std::map<std::string, double> median_ms_;

@@ -91,6 +91,7 @@ int main(int argc, char** argv) {
 
   bench::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
+  if (!reporter.any_ran()) return 0;  // only listed, or nothing matched the filter
 
   const int threads = std::max(1, renderer.threads());
   const double blur = reporter.median_ms("blur_2ch");

@@ -157,6 +157,7 @@ int main(int argc, char** argv) {
   }
   bench::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
+  if (!reporter.any_ran()) return 0;  // only listed, or nothing matched the filter
 
   std::printf("\nDepth-only pass, %dx%d d32f, %d thread(s), medians:\n", kMapSize, kMapSize, renderer.threads());
   std::printf("%-16s %12s %12s %10s %10s %10s %10s %8s\n", "case", "shadowlab ms", "llvmpipe ms", "SL Mtri/s",
@@ -165,6 +166,7 @@ int main(int argc, char** argv) {
     const double tris = double(w.soup.indices.size() / 3);
     const double sl = reporter.median_ms(w.name + "/shadowlab");
     const double lp = reporter.median_ms(w.name + "/llvmpipe");
+    if (sl == 0 && lp == 0) continue;  // filtered out
     auto rate = [](double n, double ms) { return ms > 0 ? n / (ms * 1e3) : 0.0; };
     std::printf("%-16s %12.2f %12.2f %10.2f %10.2f %10.3f %10.3f %7.2fx\n", w.name.c_str(), sl, lp, rate(tris, sl),
                 rate(tris, lp), rate(w.pixels, sl) * 1e-3, rate(w.pixels, lp) * 1e-3, sl > 0 && lp > 0 ? lp / sl : 0.0);
@@ -173,6 +175,7 @@ int main(int argc, char** argv) {
               "tasks and in the clear (summed over workers)\n");
   for (const Workload& w : workloads) {
     const std::string n = w.name + "/shadowlab";
+    if (reporter.median_ms(n) == 0) continue;  // filtered out
     auto m = [&](const char* counter) { return reporter.median_counter(n, counter); };
     std::printf("%-16s %8.2f / %8.2f, busy %8.2f / %8.2f, clear %6.2f, %g chunks\n", w.name.c_str(), m("front_ms"),
                 m("back_ms"), m("front_busy_ms"), m("back_busy_ms"), m("clear_cpu_ms"), m("chunks"));

@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
   }
   bench::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
+  if (!reporter.any_ran()) return 0;  // only listed, or nothing matched the filter
   std::printf("\n%s %dx%d, %d thread(s), medians (map passes | whole frame):\n", scene_name.c_str(),
               opt.smoke ? 480 : 1920, opt.smoke ? 270 : 1080, renderer.threads());
   for (const Setup& s : setups)

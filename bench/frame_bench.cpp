@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   }
   bench::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
+  if (!reporter.any_ran()) return 0;  // only listed, or nothing matched the filter
   std::printf("\ntutorial frame %s, %d thread(s), medians:\n", opt.smoke ? "480x270, 512² map" : "1920x1080, 2048² d16 map",
               renderer.threads());
   for (const char* filter : filters)

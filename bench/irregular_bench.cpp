@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
   }
   bench::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
+  if (!reporter.any_ran()) return 0;  // only listed, or nothing matched the filter
   std::printf("\n%s %dx%d, %d thread(s), whole-frame medians:\n", scene_name.c_str(), width, height,
               renderer.threads());
   const double base = reporter.median_ms("frame/classic2048_pcf");

@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
   }
   bench::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
+  if (!reporter.any_ran()) return 0;  // only listed, or nothing matched the filter
   std::printf("\nprojective scene %dx%d, 256² maps per caster, %d thread(s), medians:\n", width, height,
               renderer.threads());
   std::printf("%-8s %-8s %-12s %12s %14s %14s\n", "casters", "motion", "mode", "ms/frame", "maps rebuilt", "extra passes");
