@@ -180,20 +180,25 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   auto shade_vertices = [&](size_t begin, size_t end, unsigned* codes, WindowVertex* win) {
     for (size_t i0 = begin; i0 < end; i0 += 8) {
       const int n = int(std::min<size_t>(8, end - i0));
-      alignas(32) float x[8], y[8], z[8], w[8];
+      alignas(32) glm::vec4 pos[8];  // lanes past the end repeat the first
       for (int l = 0; l < 8; ++l) {
-        const size_t i = i0 + size_t(l < n ? l : 0);  // lanes past the end repeat the first
-        glm::vec4 p;
+        const size_t i = i0 + size_t(l < n ? l : 0);
         if constexpr (kShaded) {
           CV& cv = post[i];
           if (l < n) cv.pos = shader.vertex(vertices[i], cv.var);
-          p = cv.pos;
+          pos[l] = cv.pos;
         } else {
           V unused;
-          p = shader.vertex(vertices[i], unused);
+          pos[l] = shader.vertex(vertices[i], unused);
         }
-        x[l] = p.x, y[l] = p.y, z[l] = p.z, w[l] = p.w;
       }
+      static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
+      // The coordinates in lanes: deinterleave_rows4 takes the four-float records 0–3 as its first "row" and
+      // 4–7 as its second, two records per load.
+      simd::VecF32 x, y, z, w;
+      const float* p = &pos[0].x;
+      simd::deinterleave_rows4(simd::VecF32::load(p), simd::VecF32::load(p + 8), simd::VecF32::load(p + 16),
+                               simd::VecF32::load(p + 24), x, y, z, w);
       fixed_function.run(x, y, z, w, n, codes + (i0 - begin), win + (i0 - begin));
     }
   };

@@ -4,6 +4,7 @@
 // those of the one-vertex code. Front end of the pipeline, after the vertex shader.
 #pragma once
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 
 #include "raster/clip.h"
@@ -26,10 +27,15 @@ class VertexBatch {
   // whose code is 0 (the others' win[l] is left alone).
   void run(const float* x, const float* y, const float* z, const float* w, int n, unsigned* codes,
            WindowVertex* win) const {
+    using simd::VecF32;
+    run(VecF32::load(x), VecF32::load(y), VecF32::load(z), VecF32::load(w), n, codes, win);
+  }
+  // The same on positions already in lanes.
+  void run(simd::VecF32 px, simd::VecF32 py, simd::VecF32 pz, simd::VecF32 pw, int n, unsigned* codes,
+           WindowVertex* win) const {
     using simd::Mask;
     using simd::VecF32;
     using simd::VecI32;
-    const VecF32 px = VecF32::load(x), py = VecF32::load(y), pz = VecF32::load(z), pw = VecF32::load(w);
     // std::isfinite: the exponent field is not all ones.
     const VecI32 exp = VecI32::splat(0x7f800000);
     auto finite = [&](VecF32 v) { return simd::cmp_neq(simd::bitcast_i32(v) & exp, exp); };
@@ -61,6 +67,11 @@ class VertexBatch {
     const VecF32 wz = simd::fma(nz, VecF32::splat(0.5f), VecF32::splat(0.5f));
     const VecI32 sx = simd::round_to_int(wx * VecF32::splat(float(kSubpixelScale)));
     const VecI32 sy = simd::round_to_int(wy * VecF32::splat(float(kSubpixelScale)));
+    if (inside == 0xFFu) {  // all eight: one transposing store of the eight consecutive records
+      static_assert(sizeof(WindowVertex) == 6 * sizeof(float) && offsetof(WindowVertex, sy) == 5 * sizeof(float));
+      simd::store_interleaved6(win, wx, wy, wz, inv_w, simd::bitcast_f32(sx), simd::bitcast_f32(sy));
+      return;
+    }
     alignas(32) float out[4][8];
     alignas(32) uint32_t snapped[2][8];
     wx.store(out[0]), wy.store(out[1]), wz.store(out[2]), inv_w.store(out[3]);

@@ -194,6 +194,27 @@ inline void transpose8(VecF32 (&r)[8]) {
   }
 }
 
+// ---- For the vertex stage (vertex_batch.h). Writes lane l of the six vectors to out[6·l + j], j = 0…5: eight
+// consecutive records of six 32-bit fields, 48 floats in six stores. The records' 4-lane halves are transposed
+// as 4×4 blocks (fields 0–3) plus pairs (fields 4–5), then the halves of lanes 0–3 and 4–7 are stored in turn.
+inline void store_interleaved6(void* dst, VecF32 f0, VecF32 f1, VecF32 f2, VecF32 f3, VecF32 f4, VecF32 f5) {
+  float* out = static_cast<float*>(dst);  // written through __m256 stores, which may alias anything
+  auto lo = [](__m256 a, __m256 b) { return _mm256_castpd_ps(_mm256_unpacklo_pd(_mm256_castps_pd(a), _mm256_castps_pd(b))); };
+  auto hi = [](__m256 a, __m256 b) { return _mm256_castpd_ps(_mm256_unpackhi_pd(_mm256_castps_pd(a), _mm256_castps_pd(b))); };
+  const __m256 t0 = _mm256_unpacklo_ps(f0.v, f1.v), t1 = _mm256_unpackhi_ps(f0.v, f1.v);  // per half: a0 b0 a1 b1 | a2 b2 a3 b3
+  const __m256 t2 = _mm256_unpacklo_ps(f2.v, f3.v), t3 = _mm256_unpackhi_ps(f2.v, f3.v);
+  const __m256 e0 = _mm256_unpacklo_ps(f4.v, f5.v), e1 = _mm256_unpackhi_ps(f4.v, f5.v);  // e0 f0 e1 f1 | e2 f2 e3 f3
+  const __m256 r0 = lo(t0, t2), r1 = hi(t0, t2), r2 = lo(t1, t3), r3 = hi(t1, t3);          // record k's fields 0–3
+  // Per half, 24 floats in six groups of four: r0 | e0 f0 r1.01 | r1.23 e1 f1 | r2 | e2 f2 r3.01 | r3.23 e3 f3.
+  const __m256 x0 = r0, x1 = lo(e0, r1), x2 = hi(r1, e0), x3 = r2, x4 = lo(e1, r3), x5 = hi(r3, e1);
+  _mm256_storeu_ps(out, _mm256_permute2f128_ps(x0, x1, 0x20));
+  _mm256_storeu_ps(out + 8, _mm256_permute2f128_ps(x2, x3, 0x20));
+  _mm256_storeu_ps(out + 16, _mm256_permute2f128_ps(x4, x5, 0x20));
+  _mm256_storeu_ps(out + 24, _mm256_permute2f128_ps(x0, x1, 0x31));
+  _mm256_storeu_ps(out + 32, _mm256_permute2f128_ps(x2, x3, 0x31));
+  _mm256_storeu_ps(out + 40, _mm256_permute2f128_ps(x4, x5, 0x31));
+}
+
 // ---- For the binning of large draws (bins.h). One 64-byte record, 32-byte aligned at both ends, copied with
 // non-temporal stores: the line goes to memory without being read first (no read for ownership) and without
 // evicting what the caches hold. Such stores are weakly ordered: stream_fence() before another thread reads them.

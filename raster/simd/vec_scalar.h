@@ -126,6 +126,12 @@ inline void transpose8(VecF32 (&r)[8]) {
   for (int i = 0; i < 8; ++i) r[i] = o[i];
 }
 
+inline void store_interleaved6(void* out, VecF32 f0, VecF32 f1, VecF32 f2, VecF32 f3, VecF32 f4, VecF32 f5) {
+  const VecF32* f[6] = {&f0, &f1, &f2, &f3, &f4, &f5};
+  for (int l = 0; l < 8; ++l)
+    for (int j = 0; j < 6; ++j) std::memcpy(static_cast<char*>(out) + 4 * (6 * l + j), &f[j]->v[l], 4);
+}
+
 // Plain copies: ordinary stores need no fence.
 inline void stream_line(void* dst, const void* src) { std::memcpy(dst, src, 64); }
 inline void stream_fence() {}

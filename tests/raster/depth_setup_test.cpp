@@ -16,17 +16,12 @@
 #include "raster/outcode.h"
 #include "raster/setup.h"
 #include "raster/vertex_batch.h"
+#include "tests/raster/raster_test_util.h"
 
 using namespace raster;
+using rtest::snapped_vertex;
 
 namespace {
-
-WindowVertex snapped_vertex(int32_t sx, int32_t sy, float z) {
-  WindowVertex v{};
-  v.x = float(sx) / float(kSubpixelScale), v.y = float(sy) / float(kSubpixelScale), v.z = z, v.inv_w = 1.0f;
-  v.sx = sx, v.sy = sy;
-  return v;
-}
 
 // Checks pack/expand and the edge values over the box widened by one block, where rasterize() evaluates them.
 void expect_round_trip(const TriangleSetup& t, const std::string& what) {
@@ -120,11 +115,15 @@ TEST(DepthSetup, VertexBatchMatchesOneVertexAtATime) {
     const OutcodeTester outcode_of(planes);
     const VertexBatch batch(planes, sp, kInvalid);
     for (int round = 0; round < 4000; ++round) {
-      const int n = 1 + round % 8;
+      // Every fourth round: eight vertices inside the view volume, which the batch writes all at once.
+      const bool all_inside = round % 4 == 3;
+      const int n = all_inside ? 8 : 1 + round % 8;
       alignas(32) float x[8], y[8], z[8], w[8];
       for (int l = 0; l < 8; ++l) {
-        const float pw = w_dist(rng);
-        x[l] = u(rng) * pw, y[l] = u(rng) * pw, z[l] = u(rng) * pw, w[l] = pw;
+        const float pw = all_inside ? 0.1f + std::abs(w_dist(rng)) : w_dist(rng);
+        const float reach = all_inside ? 0.6f : 1.0f;  // u spans ±1.6: inside the clip volume once scaled
+        x[l] = u(rng) * reach * pw, y[l] = u(rng) * reach * pw, z[l] = u(rng) * reach * pw, w[l] = pw;
+        if (all_inside) continue;
         switch (special(rng)) {
           case 0: x[l] = nan; break;
           case 1: w[l] = inf; break;
@@ -136,14 +135,19 @@ TEST(DepthSetup, VertexBatchMatchesOneVertexAtATime) {
       unsigned codes[8];
       WindowVertex win[8] = {};
       batch.run(x, y, z, w, n, codes, win);
+      int inside = 0;
       for (int l = 0; l < n; ++l) {
         const glm::vec4 p(x[l], y[l], z[l], w[l]);
         const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
         const unsigned code = finite ? outcode_of(p) : kInvalid;
         ASSERT_EQ(codes[l], code) << "round " << round << ", lane " << l;
         if (code != 0) continue;
+        ++inside;
         const WindowVertex one = to_window(p, sp);
         ASSERT_EQ(std::memcmp(&win[l], &one, sizeof(WindowVertex)), 0) << "round " << round << ", lane " << l;
+      }
+      if (all_inside) {
+        ASSERT_EQ(inside, 8) << "round " << round;
       }
     }
   }
