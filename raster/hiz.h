@@ -36,10 +36,6 @@ class TileHiZ {
       for (float& v : row) v = z;
   }
 
-  float farthest(int32_t bx, int32_t by) const {
-    return zmax_[(by - y0_) >> kBlockSizeLog2][(bx - x0_) >> kBlockSizeLog2];
-  }
-
   // The blocks of the block row at `by` that a triangle with lower bounds `lower` (HiZPlane::row at the tile's
   // x0) cannot pass, bit i for the block at x0 + 8·i: with LESS (kStrict) where the bound is not nearer than the
   // block's farthest depth, with LEQUAL where it is farther. A NaN on either side hides nothing.

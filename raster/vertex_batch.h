@@ -24,13 +24,7 @@ class VertexBatch {
       : planes_(cp), sp_(sp), invalid_(invalid) {}
 
   // Lanes [0, n) of the clip-space positions (x, y, z, w), n <= 8: codes[l] for each, and win[l] for those
-  // whose code is 0 (the others' win[l] is left alone).
-  void run(const float* x, const float* y, const float* z, const float* w, int n, unsigned* codes,
-           WindowVertex* win) const {
-    using simd::VecF32;
-    run(VecF32::load(x), VecF32::load(y), VecF32::load(z), VecF32::load(w), n, codes, win);
-  }
-  // The same on positions already in lanes.
+  // whose code is 0 (the others' win[l] is left alone; when all eight are inside, win[0..7] are written at once).
   void run(simd::VecF32 px, simd::VecF32 py, simd::VecF32 pz, simd::VecF32 pw, int n, unsigned* codes,
            WindowVertex* win) const {
     using simd::Mask;

@@ -134,7 +134,8 @@ TEST(DepthSetup, VertexBatchMatchesOneVertexAtATime) {
       }
       unsigned codes[8];
       WindowVertex win[8] = {};
-      batch.run(x, y, z, w, n, codes, win);
+      using simd::VecF32;
+      batch.run(VecF32::load(x), VecF32::load(y), VecF32::load(z), VecF32::load(w), n, codes, win);
       int inside = 0;
       for (int l = 0; l < n; ++l) {
         const glm::vec4 p(x[l], y[l], z[l], w[l]);
