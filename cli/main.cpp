@@ -1,7 +1,7 @@
 // shadowlab's entry point: picks the instruction set the pipeline runs on, once, before anything else, and hands
 // the command line to that build of it (cli/run.cpp, compiled once per set in SHADOWLAB_ISAS: see
 // raster/simd/isa.h). The widest set the CPU and the operating system support is taken; the environment
-// variable SHADOWLAB_ISA=avx2|scalar|auto forces one. Every set gives bit-identical output
+// variable SHADOWLAB_ISA=avx512|avx2|scalar|auto forces one. Every set gives bit-identical output
 // (tests/cli/isa_dispatch_test.cpp), so the choice changes only the speed. This file is built for plain x86-64
 // whatever the sets are: it must run on any CPU to tell it apart.
 #include <cstdio>
@@ -14,6 +14,11 @@
 
 // One declaration per set built (CMake defines SHADOWLAB_HAVE_ISA_<SET>); the definitions are cli/run.cpp's
 // `cli::run` in the set's namespace.
+#if defined(SHADOWLAB_HAVE_ISA_AVX512)
+namespace cli::isa_avx512 {
+int run(int argc, char** argv);
+}
+#endif
 #if defined(SHADOWLAB_HAVE_ISA_AVX2)
 namespace cli::isa_avx2 {
 int run(int argc, char** argv);
@@ -54,6 +59,23 @@ bool cpu_has_avx2() {
 #endif
 }
 
+// The AVX-512 set (raster/simd/isa.h): everything AVX2 needs, AVX-512 F, DQ, BW and VL, and the operating
+// system's support for the opmask and 512-bit register state (XCR0 bits 5–7).
+bool cpu_has_avx512() {
+#if defined(__x86_64__) || defined(__i386__)
+  if (!cpu_has_avx2()) return false;
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  unsigned xcr0_lo = 0, xcr0_hi = 0;
+  __asm__ volatile("xgetbv" : "=a"(xcr0_lo), "=d"(xcr0_hi) : "c"(0));
+  if ((xcr0_lo & 0xE6u) != 0xE6u) return false;
+  __cpuid_count(7, 0, a, b, c, d);
+  const bool f = b & (1u << 16), dq = b & (1u << 17), bw = b & (1u << 30), vl = b & (1u << 31);
+  return f && dq && bw && vl;
+#else
+  return false;
+#endif
+}
+
 int fail(const char* what) {
   std::fprintf(stderr, "shadowlab: error: SHADOWLAB_ISA: %s\n", what);
   return kExitBadInput;
@@ -65,9 +87,18 @@ int main(int argc, char** argv) {
   const char* forced = std::getenv("SHADOWLAB_ISA");
   if (forced != nullptr && *forced == '\0') forced = nullptr;
   const bool want_auto = forced == nullptr || std::strcmp(forced, "auto") == 0;
-  if (!want_auto && std::strcmp(forced, "avx2") != 0 && std::strcmp(forced, "scalar") != 0)
-    return fail("unknown instruction set (expected avx2, scalar or auto)");
+  if (!want_auto && std::strcmp(forced, "avx512") != 0 && std::strcmp(forced, "avx2") != 0 &&
+      std::strcmp(forced, "scalar") != 0)
+    return fail("unknown instruction set (expected avx512, avx2, scalar or auto)");
 
+  if (want_auto || std::strcmp(forced, "avx512") == 0) {
+#if defined(SHADOWLAB_HAVE_ISA_AVX512)
+    if (cpu_has_avx512()) return cli::isa_avx512::run(argc, argv);
+    if (!want_auto) return fail("avx512 was asked for, but this CPU lacks AVX-512 F, DQ, BW or VL (or AVX2)");
+#else
+    if (!want_auto) return fail("avx512 was asked for, but this build has no AVX-512 path (SHADOWLAB_ISAS)");
+#endif
+  }
   if (want_auto || std::strcmp(forced, "avx2") == 0) {
 #if defined(SHADOWLAB_HAVE_ISA_AVX2)
     if (cpu_has_avx2()) return cli::isa_avx2::run(argc, argv);
@@ -80,6 +111,6 @@ int main(int argc, char** argv) {
   return cli::isa_scalar::run(argc, argv);
 #else
   if (!want_auto) return fail("scalar was asked for, but this build has no scalar path (SHADOWLAB_ISAS)");
-  return fail("this CPU lacks AVX2, the only instruction set this build has (SHADOWLAB_ISAS)");
+  return fail("this CPU lacks the instruction sets this build has (SHADOWLAB_ISAS)");
 #endif
 }

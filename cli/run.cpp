@@ -43,8 +43,8 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Help for every command");
   app.set_version_flag("--version", version_line(), "Print the version, git revision and SIMD path, and exit");
-  app.footer("Environment: SHADOWLAB_ISA=avx2|scalar|auto chooses the instruction set the pipeline runs on "
-             "(default auto: AVX2 where the CPU has it; every set writes the same bytes).");
+  app.footer("Environment: SHADOWLAB_ISA=avx512|avx2|scalar|auto chooses the instruction set the pipeline runs on "
+             "(default auto: the widest the CPU has; every set writes the same bytes).");
   std::vector<Command> commands = {add_render_command(app), add_shadowmap_command(app),
                                    add_inspect_command(app), add_diff_command(app),
                                    add_eval_command(app),    add_eval_merge_command(app),

@@ -1,10 +1,12 @@
 // Coverage of one triangle over one 8×8 block: the hierarchical accept/reject test with exact int64 edge
-// values at the block, then, only for edges that cross it, per-pixel int32 edge values eight lanes at a time.
+// values at the block, then, only for edges that cross it, per-pixel int32 edge values eight lanes at a time
+// (one row), or sixteen (two rows) for the depth-only stage where it works two rows at a time (depth_stage.h).
 // Back end of the pipeline; the ranges that make int32 exact are derived in limits.h.
 #pragma once
 #include <algorithm>
 #include <cstdlib>
 #include <cstdint>
+#include <type_traits>
 
 #include "raster/depth_setup.h"
 #include "raster/limits.h"
@@ -43,10 +45,55 @@ struct EdgeRows {
     }
   }
   simd::Mask inside() const { return simd::non_negative(f[0] | f[1] | f[2]); }
-  void next_row() {
+  void next_rows() {
     f[0] = f[0] + step[0];
     f[1] = f[1] + step[1];
     f[2] = f[2] + step[2];
+  }
+};
+
+// The same for two rows at a time, sixteen lanes: lanes 0–7 hold the upper row, 8–15 the row below, and each
+// step moves down two rows. Values wrap modulo 2^32 like the eight-lane form's, and the rows a stage reads lie
+// where limits.h bounds them (inside a crossed block, or within a block of a narrow triangle's box).
+struct EdgeRowPairs {
+  simd::VecI32x16 f[3], step[3];
+
+  // f_start: each edge's value at the first pixel of the upper row.
+  template <class Tri>
+  EdgeRowPairs(const Tri& t, const int64_t* f_start, const bool* crosses) {
+    using simd::VecI32;
+    using simd::VecI32x16;
+    for (int k = 0; k < 3; ++k) {
+      if (!crosses[k]) {
+        f[k] = step[k] = VecI32x16::splat(0);
+        continue;
+      }
+      const VecI32 upper = VecI32::splat(int32_t(f_start[k])) + VecI32::splat(t.a[k]) * VecI32::iota();
+      f[k] = VecI32x16::rows(upper, upper + VecI32::splat(t.b[k]));
+      step[k] = VecI32x16::splat(int32_t(uint32_t(t.b[k]) * 2u));
+    }
+  }
+  simd::Mask16 inside() const { return simd::non_negative(f[0] | f[1] | f[2]); }
+  void next_rows() {
+    f[0] = f[0] + step[0];
+    f[1] = f[1] + step[1];
+    f[2] = f[2] + step[2];
+  }
+};
+
+// The per-pixel edge values and lane masks of a row stage that works kRows rows at a time (Stage::kRows: 1 or 2,
+// depth_stage.h), and its lanes for a group of rows starting at row r: `lanes` in each of the group's rows that
+// lies in [lo, hi]. Groups start at a multiple of kRows, so only a first or last group can be partial.
+template <int kRows>
+struct RowGroup {
+  using Edges = std::conditional_t<kRows == 1, EdgeRows, EdgeRowPairs>;
+  using Mask = std::conditional_t<kRows == 1, simd::Mask, simd::Mask16>;
+  const unsigned lanes;
+  const Mask full = Mask::from_bits(kRows == 1 ? lanes : lanes | lanes << 8);
+  Mask at(int r, int lo, int hi) const {
+    if constexpr (kRows == 1) return full;  // the loops keep r in [lo, hi]
+    else if (r >= lo && r + 1 <= hi) return full;
+    else return Mask::from_bits((r >= lo ? lanes : 0u) | (r + 1 <= hi ? lanes << 8 : 0u));
   }
 };
 
@@ -106,30 +153,34 @@ inline void walk_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_
 }
 
 // A row stage's blocks: those hidden by hierarchical depth are skipped, blocks inside every edge are handed
-// over row by row without per-pixel edge tests, the others row by row with their edge values.
+// over kRows rows at a time without per-pixel edge tests, the others with their edge values. Groups start at a
+// multiple of kRows within the block, so every row of a group is in it (a row outside [row_lo, row_hi] gets no
+// lanes), and a group that was handed over counts all its rows as done for the block's bound.
 template <class Tri, class Stage>
 inline void rasterize_blocks(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const Stage& stage) {
+  constexpr int kRows = Stage::kRows;
   const auto hiz = stage.hiz_plane(t, PixelRect{x0, y0, x1, y1});
   auto hidden = [&](int32_t by) { return stage.hidden_blocks(hiz, by); };
   walk_blocks(t, x0, y0, x1, y1, hidden, [&](int32_t bx, int32_t by, int row_lo, int row_hi, const WalkedBlock& blk) {
-    const simd::Mask lanes =
-        simd::Mask::from_bits(lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1)));
+    const RowGroup<kRows> group{lane_range_mask(std::max(x0 - bx, 0), std::min(x1 - bx, kBlockSize - 1))};
+    const int first = row_lo & -kRows;
     const auto cols = stage.columns(t, bx);
     typename Stage::BlockMax bm;
-    unsigned done = lane_range_mask(row_lo, row_hi);
-    auto at = stage.cursor(bx, by + row_lo);
+    unsigned done = lane_range_mask(first, row_hi | (kRows - 1));
+    auto at = stage.cursor(bx, by + first);
     if (blk.accepted()) {
-      for (int r = row_lo; r <= row_hi; ++r, stage.next_row(at)) stage.row(cols, at, lanes, bm);
+      for (int r = first; r <= row_hi; r += kRows, stage.next_rows(at))
+        stage.rows(cols, at, group.at(r, row_lo, row_hi), bm);
     } else {
       int64_t f_start[3];
-      blk.row_start(t, row_lo, f_start);
-      EdgeRows edges(t, f_start, blk.crosses);
-      for (int r = row_lo; r <= row_hi; ++r) {
-        const simd::Mask m = lanes & edges.inside();
-        if (m.any()) stage.row(cols, at, m, bm);
-        else done &= ~(1u << r);
-        edges.next_row();
-        stage.next_row(at);
+      blk.row_start(t, first, f_start);
+      typename RowGroup<kRows>::Edges edges(t, f_start, blk.crosses);
+      for (int r = first; r <= row_hi; r += kRows) {
+        const auto m = group.at(r, row_lo, row_hi) & edges.inside();
+        if (m.any()) stage.rows(cols, at, m, bm);
+        else done &= ~(((1u << kRows) - 1u) << r);
+        edges.next_rows();
+        stage.next_rows(at);
       }
     }
     stage.block_done(bx, by, bm, done);
@@ -160,19 +211,19 @@ inline void rasterize_block_masks(const TriangleSetup& t, int32_t x0, int32_t y0
     uint64_t mask = 0;
     for (int r = row_lo; r <= row_hi; ++r) {
       mask |= uint64_t(edges.inside().bits() & lanes) << (8 * r);
-      edges.next_row();
+      edges.next_rows();
     }
     if (mask) stage.block(t, bx, by, mask);
   });
 }
 
 // Rasterizes one triangle within `r` (a rectangle inside one tile) and hands covered pixels to the stage.
-// A row stage (depth-only) has columns(t, x), cursor(x, y) / next_row(cursor), row(columns, cursor, Mask,
-// BlockMax&), and hiz_plane /
-// hidden_blocks / block_done around each block (hierarchical depth), and gets one 8-lane segment per row; narrow
-// triangles (at most 8 pixels wide within `r`) take one segment placed inside the tile, others go through 8×8
-// blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks. A row stage takes
-// either record (TriangleSetup or DepthSetup), a block stage a TriangleSetup.
+// A row stage (depth-only) has kRows, columns(t, x), cursor(x, y) / next_rows(cursor), rows(columns, cursor,
+// mask, BlockMax&), and hiz_plane / hidden_blocks / block_done around each block (hierarchical depth), and gets
+// one segment of 8 pixels by kRows rows at a time; narrow triangles (at most 8 pixels wide within `r`) take one
+// segment column placed inside the tile, others go through 8×8 blocks. A block stage (shaded) has block(t, bx,
+// by, uint64_t mask) and gets whole blocks. A row stage takes either record (TriangleSetup or DepthSetup), a
+// block stage a TriangleSetup.
 template <class Tri, class Stage>
 inline void rasterize(const Tri& t, const PixelRect& r, const Stage& stage) {
   constexpr bool kRowStage = requires { stage.columns(t, 0); };
@@ -181,21 +232,23 @@ inline void rasterize(const Tri& t, const PixelRect& r, const Stage& stage) {
   if (x0 > x1 || y0 > y1) return;
   if constexpr (kRowStage) {
     if (x1 - x0 < kBlockSize && is_narrow(t)) {
+      constexpr int kRows = Stage::kRows;
       const int32_t xs = std::min(x0, (x0 | (kTileSize - 1)) - (kBlockSize - 1));  // segment stays in the tile
-      const simd::Mask lanes = simd::Mask::from_bits(lane_range_mask(x0 - xs, x1 - xs));
+      const RowGroup<kRows> group{lane_range_mask(x0 - xs, x1 - xs)};
+      const int32_t ys = y0 & -kRows;  // groups start at a multiple of kRows: all their rows are in the tile
       int64_t f_start[3];
       const bool crosses[3] = {true, true, true};
       for (int k = 0; k < 3; ++k)  // exact modulo 2^32, and the value fits int32 (limits.h, kNarrowCoefBits)
-        f_start[k] = edge_value_narrow(t, k, xs, y0);
-      EdgeRows edges(t, f_start, crosses);
+        f_start[k] = edge_value_narrow(t, k, xs, ys);
+      typename RowGroup<kRows>::Edges edges(t, f_start, crosses);
       const auto cols = stage.columns(t, xs);
       typename Stage::BlockMax unused;
-      auto at = stage.cursor(xs, y0);
-      for (int32_t y = y0; y <= y1; ++y) {
-        const simd::Mask m = lanes & edges.inside();
-        if (m.any()) stage.row(cols, at, m, unused);
-        edges.next_row();
-        stage.next_row(at);
+      auto at = stage.cursor(xs, ys);
+      for (int32_t y = ys; y <= y1; y += kRows) {
+        const auto m = group.at(y, y0, y1) & edges.inside();
+        if (m.any()) stage.rows(cols, at, m, unused);
+        edges.next_rows();
+        stage.next_rows(at);
       }
       return;
     }

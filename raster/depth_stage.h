@@ -1,5 +1,6 @@
-// The lean back end of a depth-only draw: for each covered 8-pixel row of a block, the interpolated depth,
-// clamp, conversion to the format, depth test and masked write. No varyings, no colour, no quads.
+// The lean back end of a depth-only draw: for each covered 8-pixel row of a block (or pair of rows, sixteen
+// lanes, where the CPU has 512-bit vectors: kDepthRows), the interpolated depth, clamp, conversion to the format,
+// depth test and masked write. No varyings, no colour, no quads.
 #pragma once
 #include <cstdint>
 #include <type_traits>
@@ -25,10 +26,10 @@ inline simd::VecF32 plane_depth_columns(const Tri& t, int32_t bx) {
   return simd::fma(VecF32::splat(t.dzdx), x, VecF32::splat(t.z_a0));
 }
 
-inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, simd::VecF32 z_offset, simd::VecF32 y) {
-  using simd::VecF32;
-  const VecF32 z = simd::fma(dzdy, y, zcol) + z_offset;
-  return simd::min(simd::max(z, VecF32::splat(0.0f)), VecF32::splat(1.0f));
+template <class Vec>  // VecF32 or VecF32x16: the same operations lane by lane
+inline Vec plane_depth_clamped(Vec zcol, Vec dzdy, Vec z_offset, Vec y) {
+  const Vec z = simd::fma(dzdy, y, zcol) + z_offset;
+  return simd::min(simd::max(z, Vec::splat(0.0f)), Vec::splat(1.0f));
 }
 inline simd::VecF32 plane_depth_clamped(simd::VecF32 zcol, simd::VecF32 dzdy, simd::VecF32 z_offset, int32_t y) {
   return plane_depth_clamped(zcol, dzdy, z_offset, simd::VecF32::splat(float(y)));
@@ -43,11 +44,26 @@ inline constexpr bool kHiZCompare<FixedDepthFunc<DepthFunc::less>> = true;
 template <>
 inline constexpr bool kHiZCompare<FixedDepthFunc<DepthFunc::lequal>> = true;
 
-// Compare: FixedDepthFunc<LESS or LEQUAL> or DepthCompare (see dispatch_depth_only_func, depth_test.h).
-template <DepthFormat Format, class Compare, bool Write>
+// How many rows the depth-only stage works on at a time: two (sixteen lanes, one zmm register) with AVX-512;
+// one elsewhere, where the same sixteen lanes as two halves were measured slower (27 % more instructions per
+// draw of small triangles with AVX2: the doubled row state no longer fits the sixteen ymm registers). Both forms
+// give the same bits, and the tests run both on every machine (tests/raster/depth_stage_test.cpp).
+#if defined(SHADOWLAB_SIMD_AVX512)
+inline constexpr int kDepthRows = 2;
+#else
+inline constexpr int kDepthRows = 1;
+#endif
+
+// Compare: FixedDepthFunc<LESS or LEQUAL> or DepthCompare (see dispatch_depth_only_func, depth_test.h). Rows: 1
+// (eight lanes, one row at a time) or 2 (sixteen lanes: the upper row in lanes 0–7, the row below in 8–15).
+template <DepthFormat Format, class Compare, bool Write, int Rows = kDepthRows>
 struct DepthOnlyStage {
+  static_assert(Rows == 1 || Rows == 2);
+  static constexpr int kRows = Rows;
   using Traits = DepthTraits<Format>;
   using Storage = typename Traits::Storage;
+  using Vec = std::conditional_t<Rows == 1, simd::VecF32, simd::VecF32x16>;
+  using Mask = std::conditional_t<Rows == 1, simd::Mask, simd::Mask16>;
   // Hierarchical depth applies to LESS and LEQUAL into d32f: a block whose farthest stored depth is nearer
   // than everything the triangle has there cannot pass.
   static constexpr bool kHiZ = Format == DepthFormat::d32f && kHiZCompare<Compare>;
@@ -61,14 +77,14 @@ struct DepthOnlyStage {
   size_t pitch;
   [[no_unique_address]] Compare compare;
 
-  // The triangle's per-segment constants: the column part of the depth plane (see plane_depth_columns) and the
-  // row slope and polygon offset, splatted once.
+  // The triangle's per-segment constants: the column part of the depth plane (see plane_depth_columns) in every
+  // row's lanes, and the row slope and polygon offset, splatted once.
   struct Columns {
-    simd::VecF32 zcol, dzdy, z_offset;
+    Vec zcol, dzdy, z_offset;
   };
   // The farthest depth written to the rows of the current block, for the hierarchical bound (kHiZ only).
   struct BlockMax {
-    simd::VecF32 z = simd::VecF32::splat(0.0f);
+    Vec z = Vec::splat(0.0f);
   };
 
   // The per-triangle part of the hierarchical test (see hiz.h), for blocks inside `r`.
@@ -87,41 +103,62 @@ struct DepthOnlyStage {
     return 0;
   }
 
-  // After the rows in `rows_done` (bit r: row by + r) of a block were handed to row() with `bm`: the block's
+  // After the rows in `rows_done` (bit r: row by + r) of a block were handed to rows() with `bm`: the block's
   // new bound, from what was written and the rows left untouched.
   void block_done(int32_t bx, int32_t by, const BlockMax& bm, unsigned rows_done) const {
-    if constexpr (kHiZ && Write) hiz->update(*depth, bx, by, bm.z, rows_done);
+    if constexpr (kHiZ && Write) {
+      if constexpr (Rows == 1) hiz->update(*depth, bx, by, bm.z, rows_done);
+      else hiz->update(*depth, bx, by, simd::max(bm.z.row0(), bm.z.row1()), rows_done);
+    }
   }
 
   // The column part of the depth plane for the segment starting at x, computed once per segment.
   template <class Tri>
   Columns columns(const Tri& t, int32_t x) const {
-    return {plane_depth_columns(t, x), simd::VecF32::splat(t.dzdy), simd::VecF32::splat(t.z_offset)};
+    const simd::VecF32 zcol = plane_depth_columns(t, x);
+    if constexpr (Rows == 1) return {zcol, Vec::splat(t.dzdy), Vec::splat(t.z_offset)};
+    else return {Vec::rows(zcol, zcol), Vec::splat(t.dzdy), Vec::splat(t.z_offset)};
   }
 
-  // Where a segment's row is: its first pixel in the target and its y as a float in every lane (exact: pixel
-  // indices are below 2^24), stepped one row up at a time.
+  // Where a segment's rows are: the first pixel in the target and each row's y as a float in its lanes (exact:
+  // pixel indices are below 2^24), stepped Rows rows at a time.
   struct Cursor {
     Storage* p;
-    simd::VecF32 y;
+    Vec y;
   };
-  Cursor cursor(int32_t x, int32_t y) const { return {base + size_t(y) * pitch + x, simd::VecF32::splat(float(y))}; }
-  void next_row(Cursor& c) const {
-    c.p += pitch;
-    c.y = c.y + simd::VecF32::splat(1.0f);
+  Cursor cursor(int32_t x, int32_t y) const {
+    Storage* p = base + size_t(y) * pitch + x;
+    if constexpr (Rows == 1) return {p, Vec::splat(float(y))};
+    else return {p, Vec::rows(simd::VecF32::splat(float(y)), simd::VecF32::splat(float(y + 1)))};
+  }
+  void next_rows(Cursor& c) const {
+    c.p += Rows * pitch;
+    c.y = c.y + Vec::splat(float(Rows));
   }
 
-  // The eight pixels at the cursor for the lanes set in `covered`.
-  [[gnu::always_inline]] void row(const Columns& c, const Cursor& at, simd::Mask covered, BlockMax& bm) const {
+  // The pixels at the cursor (eight of its row, and eight of the next when Rows is 2) for the lanes set in
+  // `covered`. Every row is read and written back whole, so every row must lie in the worker's tile.
+  [[gnu::always_inline]] void rows(const Columns& c, const Cursor& at, Mask covered, BlockMax& bm) const {
     Storage* p = at.p;
     const auto frag = Traits::from_depth(plane_depth_clamped(c.zcol, c.dzdy, c.z_offset, at.y));
-    const auto stored = Traits::load(p);
-    const simd::Mask pass = compare(frag, stored) & covered;
+    const auto stored = load(p);
+    const Mask pass = compare(frag, stored) & covered;
     if constexpr (Write) {
       const auto next = simd::select(pass, stored, frag);
-      Traits::store(p, next);
+      store(p, next);
       if constexpr (kHiZ) bm.z = simd::max(bm.z, next);
     }
+  }
+
+ private:
+  auto load(const Storage* p) const {
+    if constexpr (Rows == 1) return Traits::load(p);
+    else return Traits::load_rows(p, p + pitch);
+  }
+  template <class Value>
+  void store(Storage* p, Value v) const {
+    if constexpr (Rows == 1) Traits::store(p, v);
+    else Traits::store_rows(p, p + pitch, v);
   }
 };
 

@@ -1,8 +1,9 @@
-// The depth test and depth write on eight pixels at a time, per depth format: converting the fragment depth to
-// the stored representation (CONVENTIONS), comparing with one of GL's eight functions (fixed at compile time,
-// or chosen at run time once per draw), and writing under a mask.
+// The depth test and depth write on eight pixels at a time (sixteen, two rows, for the depth-only back end), per
+// depth format: converting the fragment depth to the stored representation (CONVENTIONS), comparing with one of
+// GL's eight functions (fixed at compile time, or chosen at run time once per draw), and writing under a mask.
 #pragma once
 #include <cstdint>
+#include <type_traits>
 
 #include "raster/formats.h"
 #include "raster/simd/vec.h"
@@ -23,6 +24,14 @@ struct DepthTraits<DepthFormat::d16> {
   static Value from_depth(simd::VecF32 z) { return simd::round_to_int(z * simd::VecF32::splat(65535.0f)); }
   static Value load(const Storage* p) { return Value::load_u16(p); }
   static void store(Storage* p, Value v) { v.store_u16(p); }
+  // Two rows: lanes 0–7 at r0, 8–15 at r1.
+  static simd::VecI32x16 from_depth(simd::VecF32x16 z) {
+    return simd::round_to_int(z * simd::VecF32x16::splat(65535.0f));
+  }
+  static simd::VecI32x16 load_rows(const Storage* r0, const Storage* r1) {
+    return simd::VecI32x16::load_rows_u16(r0, r1);
+  }
+  static void store_rows(Storage* r0, Storage* r1, simd::VecI32x16 v) { v.store_rows_u16(r0, r1); }
 };
 
 template <>
@@ -32,6 +41,13 @@ struct DepthTraits<DepthFormat::d24> {
   static Value from_depth(simd::VecF32 z) { return simd::round_to_int(z * simd::VecF32::splat(16777215.0f)); }
   static Value load(const Storage* p) { return Value::load_u32(p); }
   static void store(Storage* p, Value v) { v.store_u32(p); }
+  static simd::VecI32x16 from_depth(simd::VecF32x16 z) {
+    return simd::round_to_int(z * simd::VecF32x16::splat(16777215.0f));
+  }
+  static simd::VecI32x16 load_rows(const Storage* r0, const Storage* r1) {
+    return simd::VecI32x16::load_rows_u32(r0, r1);
+  }
+  static void store_rows(Storage* r0, Storage* r1, simd::VecI32x16 v) { v.store_rows_u32(r0, r1); }
 };
 
 // d32f compares the clamped float itself.
@@ -42,15 +58,22 @@ struct DepthTraits<DepthFormat::d32f> {
   static Value from_depth(simd::VecF32 z) { return z; }
   static Value load(const Storage* p) { return Value::load(p); }
   static void store(Storage* p, Value v) { v.store(p); }
+  static simd::VecF32x16 from_depth(simd::VecF32x16 z) { return z; }
+  static simd::VecF32x16 load_rows(const Storage* r0, const Storage* r1) { return simd::VecF32x16::load_rows(r0, r1); }
+  static void store_rows(Storage* r0, Storage* r1, simd::VecF32x16 v) { v.store_rows(r0, r1); }
 };
+
+// The mask type of a comparison of two Values (simd::Mask for eight lanes, simd::Mask16 for sixteen).
+template <class Value>
+using MaskOf = decltype(simd::cmp_eq(Value{}, Value{}));
 
 // Lanes where `frag FUNC stored` holds, the function fixed at compile time. GL's NaN rule on d32f: every
 // comparison is false with a NaN operand, except NOTEQUAL, which is true.
 template <DepthFunc Func, class Value>
-inline simd::Mask depth_compare(Value frag, Value stored) {
-  using simd::Mask;
+inline MaskOf<Value> depth_compare(Value frag, Value stored) {
+  using Mask = MaskOf<Value>;
   if constexpr (Func == DepthFunc::never) return Mask::from_bits(0);
-  if constexpr (Func == DepthFunc::always) return Mask::all();
+  if constexpr (Func == DepthFunc::always) return Mask::from_bits(0xFFFFu);
   if constexpr (Func == DepthFunc::less) return simd::cmp_lt(frag, stored);
   if constexpr (Func == DepthFunc::greater) return simd::cmp_lt(stored, frag);
   if constexpr (Func == DepthFunc::equal) return simd::cmp_eq(frag, stored);
@@ -63,7 +86,7 @@ inline simd::Mask depth_compare(Value frag, Value stored) {
 template <DepthFunc Func>
 struct FixedDepthFunc {
   template <class Value>
-  simd::Mask operator()(Value frag, Value stored) const { return depth_compare<Func>(frag, stored); }
+  MaskOf<Value> operator()(Value frag, Value stored) const { return depth_compare<Func>(frag, stored); }
 };
 
 // The depth test with the function chosen at run time, once per draw, without a branch per pixel: a comparison
@@ -95,12 +118,13 @@ class DepthCompare {
         greater_(lanes(kGreater)),
         unordered_(lanes(kUnordered)) {}
 
-  // Lanes where `frag FUNC stored` holds (VecI32 for the unorm formats, VecF32 for d32f).
+  // Lanes where `frag FUNC stored` holds (VecI32 / VecI32x16 for the unorm formats, VecF32 / VecF32x16 for d32f).
   template <class Value>
-  simd::Mask operator()(Value frag, Value stored) const {
-    const simd::Mask eq = simd::cmp_eq(frag, stored);
-    return (simd::cmp_lt(frag, stored) & less_) | (simd::cmp_lt(stored, frag) & greater_) | (eq & equal_) |
-           and_not(unordered_, eq);
+  MaskOf<Value> operator()(Value frag, Value stored) const {
+    using Mask = MaskOf<Value>;
+    const Mask eq = simd::cmp_eq(frag, stored);
+    return (simd::cmp_lt(frag, stored) & wide<Mask>(less_)) | (simd::cmp_lt(stored, frag) & wide<Mask>(greater_)) |
+           (eq & wide<Mask>(equal_)) | and_not(wide<Mask>(unordered_), eq);
   }
   // One pixel (int32_t codes or floats), the same classes.
   template <class T>
@@ -111,6 +135,12 @@ class DepthCompare {
 
  private:
   simd::Mask lanes(unsigned c) const { return simd::Mask::from_bits((bits_ & c) ? 0xFFu : 0u); }
+  // A class's eight-lane mask as the comparison's mask type: both rows the same.
+  template <class Mask>
+  static Mask wide(simd::Mask m) {
+    if constexpr (std::is_same_v<Mask, simd::Mask>) return m;
+    else return Mask::rows(m, m);
+  }
   unsigned bits_;
   simd::Mask less_, equal_, greater_, unordered_;
 };

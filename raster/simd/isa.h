@@ -14,21 +14,46 @@
 // by the scene library, which is built once.
 //
 // A translation unit defines exactly one of SHADOWLAB_SIMD_AVX2 and SHADOWLAB_SIMD_SCALAR (CMake does, from the
-// library it belongs to). Built with -mavx2 on the command line (a one-ISA build, the tests and benchmarks),
-// the pragma is not needed and not emitted.
+// library it belongs to). The AVX-512 set is the AVX2 set plus SHADOWLAB_SIMD_AVX512: every AVX2 code path is
+// used as it is (compiled with the wider set's encodings), and where the code has sixteen-lane work (the
+// depth-only back end, vec.h) it takes one 512-bit register instead of two halves. Its features are AVX-512 F,
+// VL, BW and DQ (Skylake-SP, Ice Lake, Sapphire Rapids and later Intel server parts, AMD Zen 4 and later). Built
+// with the flags on the command line (a one-set build, the tests and benchmarks), the pragma is not needed and
+// not emitted.
 #pragma once
 
 #if defined(SHADOWLAB_SIMD_AVX2) == defined(SHADOWLAB_SIMD_SCALAR)
 #error "define exactly one of SHADOWLAB_SIMD_AVX2 and SHADOWLAB_SIMD_SCALAR (CMake does this per library)"
 #endif
+#if defined(SHADOWLAB_SIMD_AVX512) && !defined(SHADOWLAB_SIMD_AVX2)
+#error "SHADOWLAB_SIMD_AVX512 extends the AVX2 set: define SHADOWLAB_SIMD_AVX2 too (CMake does this per library)"
+#endif
 
-#if defined(SHADOWLAB_SIMD_AVX2)
+#if defined(SHADOWLAB_SIMD_AVX512)
+#define SHADOWLAB_ISA_NAME "avx512"
+#if defined(__AVX2__) && defined(__FMA__) && defined(__BMI2__) && defined(__F16C__) && defined(__LZCNT__) && \
+    defined(__AVX512F__) && defined(__AVX512VL__) && defined(__AVX512BW__) && defined(__AVX512DQ__)
+#define SHADOWLAB_ISA_BEGIN inline namespace isa_avx512 {
+#define SHADOWLAB_ISA_END }
+#elif defined(__GNUC__) && !defined(__clang__)
+// The features cli/main.cpp checks before it takes this path.
+#define SHADOWLAB_ISA_BEGIN                                                                   \
+  _Pragma("GCC push_options")                                                                 \
+  _Pragma("GCC target(\"avx2,fma,bmi,bmi2,lzcnt,f16c,avx512f,avx512vl,avx512bw,avx512dq\")") \
+  inline namespace isa_avx512 {
+#define SHADOWLAB_ISA_END \
+  }                       \
+  _Pragma("GCC pop_options")
+#else
+#error "an AVX-512 path without its flags on the command line needs GCC's target pragma: configure SHADOWLAB_ISAS=avx512 alone"
+#endif
+#elif defined(SHADOWLAB_SIMD_AVX2)
 #define SHADOWLAB_ISA_NAME "avx2"
 #if defined(__AVX2__) && defined(__FMA__) && defined(__BMI2__) && defined(__F16C__) && defined(__LZCNT__)
 #define SHADOWLAB_ISA_BEGIN inline namespace isa_avx2 {
 #define SHADOWLAB_ISA_END }
 #elif defined(__GNUC__) && !defined(__clang__)
-// The features cli/isa_dispatch.cpp checks before it takes this path.
+// The features cli/main.cpp checks before it takes this path.
 #define SHADOWLAB_ISA_BEGIN                                  \
   _Pragma("GCC push_options")                                \
   _Pragma("GCC target(\"avx2,fma,bmi,bmi2,lzcnt,f16c\")") \

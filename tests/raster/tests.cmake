@@ -4,6 +4,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/coverage_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/clip_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/depth_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/depth_stage_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/state_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/setup_batch_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/depth_setup_test.cpp

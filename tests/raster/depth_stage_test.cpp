@@ -1,0 +1,127 @@
+// The depth-only stage one row at a time (eight lanes) and two rows at a time (sixteen lanes, the form AVX-512
+// machines run: raster/depth_stage.h, kDepthRows) leave the same bits in the target, for every depth format, for
+// the compile-time LESS and LEQUAL (with hierarchical depth on d32f) and the run-time functions, with and
+// without depth writes, on narrow and block-walked triangles, and on rectangles that start and end on odd rows
+// (pairs with one row outside). Here the sixteen lanes are two halves unless the build is the AVX-512 one; the
+// instruction-set test (tests/cli/isa_dispatch_test.cpp) compares the 512-bit form where the CPU has it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <random>
+#include <string>
+
+#include "raster/coverage.h"
+#include "raster/depth_stage.h"
+#include "raster/setup.h"
+#include "tests/raster/raster_test_util.h"
+
+using namespace raster;
+
+namespace {
+
+constexpr int W = 301, H = 203;  // tiles cut by the target's edges
+
+// Random stored depths: codes of the format, with a run of one value so that EQUAL-like functions pass somewhere.
+void fill_random(DepthTarget& d, std::mt19937& rng) {
+  std::uniform_real_distribution<float> z(0.0f, 1.0f);
+  for (int y = 0; y < d.padded_height(); ++y)
+    for (int x = 0; x < d.pitch(); ++x) {
+      const float v = (x / 16 + y / 16) % 5 == 0 ? 0.5f : z(rng);
+      if (d.format() == DepthFormat::d32f) d.row<float>(y)[x] = v;
+      else if (d.format() == DepthFormat::d24) d.row<uint32_t>(y)[x] = uint32_t(std::nearbyint(v * 16777215.0f));
+      else d.row<uint16_t>(y)[x] = uint16_t(std::nearbyint(v * 65535.0f));
+    }
+}
+
+struct Counts {
+  size_t differ = 0, changed = 0;
+};
+
+// Draws `n` random triangles through both forms of the stage into copies of one random target and counts the
+// texels (padding included) where the copies differ, and where the one-row copy differs from the start.
+template <DepthFormat F, class Compare, bool Write>
+Counts draw_both(Compare compare, unsigned seed, int n) {
+  std::mt19937 rng(seed);
+  DepthTarget one(W, H, F);
+  fill_random(one, rng);
+  const DepthTarget start = one;
+  DepthTarget two = one;
+  using Stage1 = DepthOnlyStage<F, Compare, Write, 1>;
+  using Stage2 = DepthOnlyStage<F, Compare, Write, 2>;
+  static_assert(Stage1::kHiZ == Stage2::kHiZ);
+  std::uniform_int_distribution<int32_t> pos(-16 * kSubpixelScale, (W + 16) * kSubpixelScale);
+  std::uniform_int_distribution<int32_t> small(1, 12 * kSubpixelScale), large(1, 260 * kSubpixelScale);
+  std::uniform_real_distribution<float> z(-0.2f, 1.2f);
+  std::uniform_int_distribution<int> edge(0, 5);
+  for (int i = 0; i < n; ++i) {
+    DrawState s;
+    if (i % 3 == 1) s.polygon_offset = {float(i % 5) - 2.0f, float(i % 7) * 20.0f - 60.0f};
+    const SetupParams sp = make_setup_params(s, W, H, F);
+    std::uniform_int_distribution<int32_t>& reach = i % 4 == 0 ? large : small;
+    const int32_t x = pos(rng), y = pos(rng);
+    const WindowVertex v[3] = {rtest::snapped_vertex(x, y, z(rng)),
+                               rtest::snapped_vertex(x + reach(rng), y + reach(rng) / 3, z(rng)),
+                               rtest::snapped_vertex(x + reach(rng) / 4, y + reach(rng), z(rng))};
+    TriangleSetup t{};
+    if (setup_triangle(v[0], v[1], v[2], sp, t) != SetupResult::visible &&
+        setup_triangle(v[0], v[2], v[1], sp, t) != SetupResult::visible)
+      continue;
+    // A scissor-like rectangle that trims each tile by a few pixels, so groups of rows start and end anywhere.
+    const int ex0 = edge(rng), ey0 = edge(rng), ex1 = edge(rng), ey1 = edge(rng);
+    for (int32_t ty = t.min_y >> kTileSizeLog2; ty <= t.max_y >> kTileSizeLog2; ++ty)
+      for (int32_t tx = t.min_x >> kTileSizeLog2; tx <= t.max_x >> kTileSizeLog2; ++tx) {
+        const int32_t tx0 = tx << kTileSizeLog2, ty0 = ty << kTileSizeLog2;
+        const PixelRect r{tx0 + ex0, ty0 + ey0, std::min(tx0 + kTileSize - 1 - ex1, W - 1),
+                          std::min(ty0 + kTileSize - 1 - ey1, H - 1)};
+        TileHiZ h1, h2;
+        if constexpr (Stage1::kHiZ) h1.load(one, tx0, ty0), h2.load(two, tx0, ty0);
+        rasterize(t, r, Stage1{&one, &h1, compare});
+        rasterize(t, r, Stage2{&two, &h2, compare});
+      }
+  }
+  Counts c;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      c.differ += one.raw(x, y) != two.raw(x, y);
+      c.changed += one.raw(x, y) != start.raw(x, y);
+    }
+  // Padding rows and columns are never drawn: both forms leave them as they were.
+  for (int y = 0; y < one.padded_height(); ++y)
+    for (int x = 0; x < one.pitch(); ++x) {
+      const size_t at = (size_t(y) * size_t(one.pitch()) + size_t(x)) * one.bytes_per_texel();
+      const auto* a = one.row<std::byte>(0) + at;
+      c.differ += std::memcmp(a, two.row<std::byte>(0) + at, one.bytes_per_texel()) != 0;
+      if (x >= W || y >= H) c.differ += std::memcmp(a, start.row<std::byte>(0) + at, one.bytes_per_texel()) != 0;
+    }
+  return c;
+}
+
+template <DepthFormat F>
+void check_format(const char* name) {
+  const std::string f = name;
+  Counts c = draw_both<F, FixedDepthFunc<DepthFunc::less>, true>({}, 1, 600);
+  EXPECT_EQ(c.differ, 0u) << f << " LESS";
+  EXPECT_GT(c.changed, size_t(W) * H / 4) << f << " LESS";
+  c = draw_both<F, FixedDepthFunc<DepthFunc::lequal>, true>({}, 2, 600);
+  EXPECT_EQ(c.differ, 0u) << f << " LEQUAL";
+  EXPECT_GT(c.changed, size_t(W) * H / 4) << f << " LEQUAL";
+  for (DepthFunc func : {DepthFunc::greater, DepthFunc::notequal, DepthFunc::equal, DepthFunc::gequal}) {
+    c = draw_both<F, DepthCompare, true>(DepthCompare(func), 3 + unsigned(func), 300);
+    EXPECT_EQ(c.differ, 0u) << f << " function " << int(func);
+    if (func != DepthFunc::equal) {  // EQUAL passes only where it writes the value already there
+      EXPECT_GT(c.changed, 0u) << f << " function " << int(func);
+    }
+  }
+  c = draw_both<F, FixedDepthFunc<DepthFunc::less>, false>({}, 4, 200);  // no writes: nothing moves
+  EXPECT_EQ(c.differ, 0u) << f << " LESS, no writes";
+  EXPECT_EQ(c.changed, 0u) << f << " LESS, no writes";
+}
+
+}  // namespace
+
+TEST(DepthStage, OneRowAndTwoRowFormsWriteTheSameBits) {
+  check_format<DepthFormat::d32f>("d32f");
+  check_format<DepthFormat::d24>("d24");
+  check_format<DepthFormat::d16>("d16");
+}
