@@ -9,6 +9,7 @@
 # and xz/ (an xz decompressor with its liblzma, used when the target has no xz). run.sh unpacks into a fresh
 # /tmp folder, points the dynamic loader, libglvnd and Mesa's loader at the bundle only (so a vendor driver
 # there, NVIDIA's for instance, is never used), and runs --verify and the --scaling benchmarks.
+# The build's tests/shadowlab_tests comes along where it exists (run.sh: TESTS=<gtest filter>).
 # Set BUNDLE_TEST=1 to unpack and smoke-test the bundle here in a clean environment with the system's copies
 # of the bundled libraries hidden (needs root for a private mount namespace; skipped otherwise).
 set -eu
@@ -33,6 +34,10 @@ trap 'rm -rf "$stage"' EXIT
 root=$stage/shadowlab-bundle
 mkdir -p "$root/bin" "$root/lib" "$root/dri" "$root/egl" "$root/assets/stanford_dragon"
 cp "$build/bench/shadowlab_bench_depth" "$build/bench/shadowlab_bench_pcf" "$root/bin/"
+# The build's test program too, where it has one (a build for another instruction set, e.g. configured with
+# -DSHADOWLAB_ISAS=avx512 -DSHADOWLAB_TEST_MODULES='raster;raster/reference', whose tests this machine cannot run):
+# run.sh runs it with TESTS=<gtest filter>.
+[ -x "$build/tests/shadowlab_tests" ] && cp "$build/tests/shadowlab_tests" "$root/bin/"
 cp -L "$mesa_dri/swrast_dri.so" "$root/dri/"
 cp -L "$egl_mesa_path" "$root/lib/$egl_mesa"
 if [ -f "$assets/stanford_dragon/dragon_vrip.glb" ]; then
@@ -51,8 +56,7 @@ is_glibc() {
   esac
   return 1
 }
-for f in "$root/bin/shadowlab_bench_depth" "$root/bin/shadowlab_bench_pcf" "$root/lib/$egl_mesa" \
-         "$root/dri/swrast_dri.so"; do
+for f in "$root"/bin/* "$root/lib/$egl_mesa" "$root/dri/swrast_dri.so"; do
   ldd "$f" | awk '$2 == "=>" && $3 ~ /^\// {print $1, $3}'
 done | sort -u | while read -r name path; do
   is_glibc "$name" || cp -L "$path" "$root/lib/$name"

@@ -7,6 +7,8 @@
 # THREADS=1,2,4,8,16 (default) picks the counts, REPS=7 the repetitions per case (the two renderers' repetitions
 # interleaved, as in README's table); SMOKE=1 runs a quick check
 # only (small workloads, 1 and 2 threads, with the loader's trace in OUT_DIR/ld_debug.log).
+# TESTS=FILTER first runs the bundle's test program (bin/shadowlab_tests, where the build had one) with that gtest
+# filter ('*' for all), its output in OUT_DIR/tests.log.
 # BEFORE=DIR compares instead: the depth-only benchmark of another build (DIR/shadowlab_bench_depth, DIR relative
 # to the current folder or to this script's; same libraries) against the bundle's, ROUNDS=2 rounds at each count
 # in THREADS (default 2,16), the two builds taking turns at going first.
@@ -55,6 +57,16 @@ export HOME="${HOME:-$tmp}"
 } > "$out/machine.txt" 2>&1
 
 status=0
+if [ -n "${TESTS:-}" ]; then
+  if [ -x "$b/bin/shadowlab_tests" ]; then
+    echo "== tests ($TESTS)"
+    "$b/bin/shadowlab_tests" --gtest_filter="$TESTS" > "$out/tests.log" 2>&1 || status=1
+    grep -E '^\[ *(FAILED|PASSED|SKIPPED) *\]|tests? ran|Failure' "$out/tests.log" | head -40
+  else
+    echo "run.sh: TESTS is set but the bundle has no bin/shadowlab_tests" >&2
+    status=1
+  fi
+fi
 if [ -n "$before" ]; then
   for n in $(echo "${THREADS:-2,16}" | tr ',' ' '); do
     for r in $(seq "${ROUNDS:-2}"); do
