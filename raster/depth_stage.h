@@ -47,7 +47,8 @@ inline constexpr bool kHiZCompare<FixedDepthFunc<DepthFunc::lequal>> = true;
 // How many rows the depth-only stage works on at a time: two (sixteen lanes, one zmm register) with AVX-512;
 // one elsewhere, where the same sixteen lanes as two halves were measured slower (27 % more instructions per
 // draw of small triangles with AVX2: the doubled row state no longer fits the sixteen ymm registers). Both forms
-// give the same bits, and the tests run both on every machine (tests/raster/depth_stage_test.cpp).
+// give the same bits: tests/raster/depth_stage_test.cpp compares them on every machine (with the two-halves
+// sixteen lanes there, and with the zmm ones where the tests are built for AVX-512).
 #if defined(SHADOWLAB_SIMD_AVX512)
 inline constexpr int kDepthRows = 2;
 #else

@@ -5,10 +5,11 @@
 // reference for every function is vec16_halves.h, which the AVX2 and scalar sets use; the instruction-set
 // comparison test (tests/cli/isa_dispatch_test.cpp) checks the two give the same bytes.
 //
-// GCC 12's forms of several intrinsics (min, max, conversions, 256-bit casts and extracts) pass an undefined
-// vector as the unused source of an all-lanes mask, and -Wmaybe-uninitialized reports it at every inlined use.
-// The zero-masking forms with all sixteen lanes selected are the same
-// instructions without that source, so they are used instead.
+// GCC 12's plain forms of min, max and the conversions pass an undefined vector as the unused source of an
+// all-lanes mask, and -Wmaybe-uninitialized reports it at every inlined use; their zero-masking forms with all
+// sixteen lanes selected are the same instructions without that source, so those are used. For the same
+// reason the lower half is taken with an extract of half 0 (no instruction) rather than a 512-to-256 cast;
+// the 256-to-512 casts and the other extracts are warning-free and used as they are.
 #pragma once
 #include <immintrin.h>
 

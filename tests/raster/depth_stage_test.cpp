@@ -2,7 +2,8 @@
 // machines run: raster/depth_stage.h, kDepthRows) leave the same bits in the target, for every depth format, for
 // the compile-time LESS and LEQUAL (with hierarchical depth on d32f) and the run-time functions, with and
 // without depth writes, on narrow and block-walked triangles, and on rectangles that start and end on odd rows
-// (pairs with one row outside). Here the sixteen lanes are two halves unless the build is the AVX-512 one; the
+// (pairs with one row outside); and the hierarchical bounds each form keeps over the draw stay at or above every
+// block's content. Here the sixteen lanes are two halves unless the build is the AVX-512 one; the
 // instruction-set test (tests/cli/isa_dispatch_test.cpp) compares the 512-bit form where the CPU has it.
 #include <gtest/gtest.h>
 
@@ -10,9 +11,11 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "raster/coverage.h"
 #include "raster/depth_stage.h"
+#include "raster/hiz.h"
 #include "raster/setup.h"
 #include "tests/raster/raster_test_util.h"
 
@@ -35,8 +38,24 @@ void fill_random(DepthTarget& d, std::mt19937& rng) {
 }
 
 struct Counts {
-  size_t differ = 0, changed = 0;
+  size_t differ = 0, changed = 0, low_bounds = 0;
 };
+
+// The blocks of `d` whose hierarchical bound in `tiles` (one TileHiZ per tile, row-major) is below the block's
+// largest stored depth: a bound that low would let a triangle skip a block it can pass.
+size_t bounds_below_content(const DepthTarget& d, const std::vector<TileHiZ>& tiles, int tiles_x) {
+  size_t low = 0;
+  for (int by = 0; by < d.padded_height(); by += kBlockSize)
+    for (int bx = 0; bx < d.pitch(); bx += kBlockSize) {
+      float m = 0.0f;
+      for (int r = 0; r < kBlockSize; ++r)
+        for (int l = 0; l < kBlockSize; ++l) m = std::max(m, d.row<float>(by + r)[bx + l]);
+      const TileHiZ& h = tiles[size_t(by >> kTileSizeLog2) * size_t(tiles_x) + size_t(bx >> kTileSizeLog2)];
+      // LEQUAL hides the block from a triangle whose lower bound is m exactly when the bound is below m.
+      low += h.hidden<false>(simd::VecF32::splat(m), by) >> tile_block_column(bx) & 1u;
+    }
+  return low;
+}
 
 // Draws `n` random triangles through both forms of the stage into copies of one random target and counts the
 // texels (padding included) where the copies differ, and where the one-row copy differs from the start.
@@ -50,6 +69,16 @@ Counts draw_both(Compare compare, unsigned seed, int n) {
   using Stage1 = DepthOnlyStage<F, Compare, Write, 1>;
   using Stage2 = DepthOnlyStage<F, Compare, Write, 2>;
   static_assert(Stage1::kHiZ == Stage2::kHiZ);
+  // One hierarchical bound per tile for each form, kept from triangle to triangle as the renderer keeps it over a
+  // draw, so the bounds each form leaves behind decide what the next triangles skip.
+  const int tiles_x = one.pitch() >> kTileSizeLog2, tiles_y = one.padded_height() >> kTileSizeLog2;
+  std::vector<TileHiZ> hiz1(size_t(tiles_x) * size_t(tiles_y)), hiz2(hiz1.size());
+  if constexpr (Stage1::kHiZ)
+    for (int ty = 0; ty < tiles_y; ++ty)
+      for (int tx = 0; tx < tiles_x; ++tx) {
+        hiz1[size_t(ty) * size_t(tiles_x) + size_t(tx)].load(one, tx << kTileSizeLog2, ty << kTileSizeLog2);
+        hiz2[size_t(ty) * size_t(tiles_x) + size_t(tx)].load(two, tx << kTileSizeLog2, ty << kTileSizeLog2);
+      }
   std::uniform_int_distribution<int32_t> pos(-16 * kSubpixelScale, (W + 16) * kSubpixelScale);
   std::uniform_int_distribution<int32_t> small(1, 12 * kSubpixelScale), large(1, 260 * kSubpixelScale);
   std::uniform_real_distribution<float> z(-0.2f, 1.2f);
@@ -74,10 +103,9 @@ Counts draw_both(Compare compare, unsigned seed, int n) {
         const int32_t tx0 = tx << kTileSizeLog2, ty0 = ty << kTileSizeLog2;
         const PixelRect r{tx0 + ex0, ty0 + ey0, std::min(tx0 + kTileSize - 1 - ex1, W - 1),
                           std::min(ty0 + kTileSize - 1 - ey1, H - 1)};
-        TileHiZ h1, h2;
-        if constexpr (Stage1::kHiZ) h1.load(one, tx0, ty0), h2.load(two, tx0, ty0);
-        rasterize(t, r, Stage1{&one, &h1, compare});
-        rasterize(t, r, Stage2{&two, &h2, compare});
+        const size_t tile = size_t(ty) * size_t(tiles_x) + size_t(tx);
+        rasterize(t, r, Stage1{&one, &hiz1[tile], compare});
+        rasterize(t, r, Stage2{&two, &hiz2[tile], compare});
       }
   }
   Counts c;
@@ -86,6 +114,8 @@ Counts draw_both(Compare compare, unsigned seed, int n) {
       c.differ += one.raw(x, y) != two.raw(x, y);
       c.changed += one.raw(x, y) != start.raw(x, y);
     }
+  if constexpr (Stage1::kHiZ && Write)
+    c.low_bounds = bounds_below_content(one, hiz1, tiles_x) + bounds_below_content(two, hiz2, tiles_x);
   // Padding rows and columns are never drawn: both forms leave them as they were.
   for (int y = 0; y < one.padded_height(); ++y)
     for (int x = 0; x < one.pitch(); ++x) {
@@ -102,9 +132,11 @@ void check_format(const char* name) {
   const std::string f = name;
   Counts c = draw_both<F, FixedDepthFunc<DepthFunc::less>, true>({}, 1, 600);
   EXPECT_EQ(c.differ, 0u) << f << " LESS";
+  EXPECT_EQ(c.low_bounds, 0u) << f << " LESS";
   EXPECT_GT(c.changed, size_t(W) * H / 4) << f << " LESS";
   c = draw_both<F, FixedDepthFunc<DepthFunc::lequal>, true>({}, 2, 600);
   EXPECT_EQ(c.differ, 0u) << f << " LEQUAL";
+  EXPECT_EQ(c.low_bounds, 0u) << f << " LEQUAL";
   EXPECT_GT(c.changed, size_t(W) * H / 4) << f << " LEQUAL";
   for (DepthFunc func : {DepthFunc::greater, DepthFunc::notequal, DepthFunc::equal, DepthFunc::gequal}) {
     c = draw_both<F, DepthCompare, true>(DepthCompare(func), 3 + unsigned(func), 300);
