@@ -178,27 +178,37 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   CV* post = kShaded ? post_.get<CV>(nv) : nullptr;  // depth-only draws keep no clip-space vertices
   const VertexBatch fixed_function(planes, sp, detail::kInvalidVertex);
   auto shade_vertices = [&](size_t begin, size_t end, unsigned* codes, WindowVertex* win) {
+    // Vertex i's clip-space position: the shader's result, kept for clipping and interpolation in shaded draws.
+    auto position = [&](size_t i) {
+      if constexpr (kShaded) {
+        CV& cv = post[i];
+        cv.pos = shader.vertex(vertices[i], cv.var);
+        return cv.pos;
+      } else {
+        V unused;
+        return shader.vertex(vertices[i], unused);
+      }
+    };
+    static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
     for (size_t i0 = begin; i0 < end; i0 += 8) {
       const int n = int(std::min<size_t>(8, end - i0));
-      alignas(32) glm::vec4 pos[8];  // lanes past the end repeat the first
-      for (int l = 0; l < 8; ++l) {
-        const size_t i = i0 + size_t(l < n ? l : 0);
-        if constexpr (kShaded) {
-          CV& cv = post[i];
-          if (l < n) cv.pos = shader.vertex(vertices[i], cv.var);
-          pos[l] = cv.pos;
-        } else {
-          V unused;
-          pos[l] = shader.vertex(vertices[i], unused);
-        }
-      }
-      static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
       // The coordinates in lanes: deinterleave_rows4 takes the four-float records 0–3 as its first "row" and
-      // 4–7 as its second, two records per load.
-      simd::VecF32 x, y, z, w;
-      const float* p = &pos[0].x;
-      simd::deinterleave_rows4(simd::VecF32::load(p), simd::VecF32::load(p + 8), simd::VecF32::load(p + 16),
-                               simd::VecF32::load(p + 24), x, y, z, w);
+      // 4–7 as its second, two records per vector. A full batch takes each pair of positions straight from the
+      // shader's results (a round trip through memory, written in 8-byte halves and read back 32 bytes at a time,
+      // stalls the loads); the last, partial one goes through an array whose lanes past the end repeat the first.
+      simd::VecF32 x, y, z, w, v[4];
+      if (n == 8) {
+        for (int k = 0; k < 4; ++k) {
+          const glm::vec4 a = position(i0 + 2 * k), b = position(i0 + 2 * k + 1);
+          v[k] = simd::load_rows4(&a.x, &b.x);
+        }
+      } else {
+        alignas(32) glm::vec4 pos[8];
+        for (int l = 0; l < n; ++l) pos[l] = position(i0 + size_t(l));
+        for (int l = n; l < 8; ++l) pos[l] = pos[0];
+        for (int k = 0; k < 4; ++k) v[k] = simd::VecF32::load(&pos[2 * k].x);
+      }
+      simd::deinterleave_rows4(v[0], v[1], v[2], v[3], x, y, z, w);
       fixed_function.run(x, y, z, w, n, codes + (i0 - begin), win + (i0 - begin));
     }
   };

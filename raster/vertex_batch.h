@@ -21,7 +21,7 @@ class VertexBatch {
  public:
   // `invalid` is the code of a vertex with a coordinate that is not finite.
   VertexBatch(const ClipPlanes& cp, const SetupParams& sp, unsigned invalid)
-      : planes_(cp), sp_(sp), invalid_(invalid) {}
+      : planes_(cp), sp_(sp), invalid_(invalid), frustum_(is_frustum(cp)) {}
 
   // Lanes [0, n) of the clip-space positions (x, y, z, w), n <= 8: codes[l] for each, and win[l] for those
   // whose code is 0 (the others' win[l] is left alone; when all eight are inside, win[0..7] are written at once).
@@ -37,11 +37,21 @@ class VertexBatch {
     // Outcodes: bit k when outside plane k, ((nx·x + ny·y) + nz·z) + nw·w + bias < 0 or NaN (OutcodeTester).
     VecI32 code = VecI32::splat(0);
     const VecF32 zero = VecF32::splat(0.0f);
-    for (int k = 0; k < planes_.count; ++k) {
-      const ClipPlane& p = planes_.planes[size_t(k)];
-      const VecF32 d = VecF32::splat(p.n.x) * px + VecF32::splat(p.n.y) * py + VecF32::splat(p.n.z) * pz +
-                       VecF32::splat(p.n.w) * pw + VecF32::splat(p.bias);
+    auto outside = [&](VecF32 d, int k) {
       code = code | simd::select(simd::cmp_le(zero, d), VecI32::splat(1 << k), VecI32::splat(0));
+    };
+    if (frustum_) {
+      // The frustum's planes (make_clip_planes): their distances are exactly w − x, x + w, w − y, y + w, z + w and
+      // w − z for finite coordinates (clip.h, plane_distance), and a vertex with any other is invalid below.
+      outside(pw - px, 0), outside(px + pw, 1), outside(pw - py, 2), outside(py + pw, 3);
+      if (planes_.count == 6) outside(pz + pw, 4), outside(pw - pz, 5);
+    } else {
+      for (int k = 0; k < planes_.count; ++k) {
+        const ClipPlane& p = planes_.planes[size_t(k)];
+        outside(VecF32::splat(p.n.x) * px + VecF32::splat(p.n.y) * py + VecF32::splat(p.n.z) * pz +
+                    VecF32::splat(p.n.w) * pw + VecF32::splat(p.bias),
+                k);
+      }
     }
     code = code | simd::select(simd::cmp_lt(zero, pw), VecI32::splat(1 << planes_.count), VecI32::splat(0));
     code = simd::select(ok, VecI32::splat(int32_t(invalid_)), code);
@@ -77,9 +87,24 @@ class VertexBatch {
   }
 
  private:
+  // Whether cp holds make_clip_planes()'s planes, in its order: x <= w, x >= −w, y <= w, y >= −w, then with six
+  // planes z >= −w, z <= w.
+  static bool is_frustum(const ClipPlanes& cp) {
+    static constexpr float kNormals[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 1}, {0, -1, 0, 1},
+                                             {0, 1, 0, 1},  {0, 0, 1, 1}, {0, 0, -1, 1}};
+    if (cp.count != 4 && cp.count != 6) return false;
+    for (int k = 0; k < cp.count; ++k) {
+      const ClipPlane& p = cp.planes[size_t(k)];
+      if (p.n != glm::vec4(kNormals[k][0], kNormals[k][1], kNormals[k][2], kNormals[k][3]) || p.bias != 0.0f)
+        return false;
+    }
+    return true;
+  }
+
   ClipPlanes planes_;
   SetupParams sp_;
   unsigned invalid_;
+  bool frustum_;  // is_frustum(planes_): the clip test takes the planes' exact distances
 };
 
 SHADOWLAB_ISA_END

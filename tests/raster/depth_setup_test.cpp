@@ -100,18 +100,29 @@ TEST(DepthSetup, CompactRecordReproducesSetupAtTheExtremes) {
   EXPECT_GT(checked, size_t(5000));
 }
 
+// The batch's clip test takes the frustum planes' distances directly (w − x, …); any other planes go through the
+// general dot product. Both must give OutcodeTester's codes, on the planes themselves and at signed zeros too.
 TEST(DepthSetup, VertexBatchMatchesOneVertexAtATime) {
   constexpr unsigned kInvalid = 1u << 31;
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(-1.6f, 1.6f), w_dist(-0.2f, 2.0f);
   std::uniform_int_distribution<int> special(0, 19);
-  for (bool clamp : {false, true}) {
+  // Not the frustum: the same six half-spaces with scaled normals and reordered, and a plane with a bias.
+  ClipPlanes other;
+  other.planes = {ClipPlane{{0, 2, 0, 2}}, ClipPlane{{-1, 0, 0, 1}}, ClipPlane{{0, 0, -3, 3}},
+                  ClipPlane{{1, 0, 0, 1}}, ClipPlane{{0, -1, 0, 1}}, ClipPlane{{0, 0, 1, 1}},
+                  ClipPlane{{0.5f, 0.25f, 0, 1}, 0.125f}};
+  other.count = 7;
+  for (int variant = 0; variant < 3; ++variant) {
+    const bool clamp = variant == 1;
     DrawState s;
     s.depth_clamp = clamp;
     s.viewport = Rect{-30, 17, 901, 555};
     const SetupParams sp = make_setup_params(s, 800, 600, DepthFormat::d24);
-    const ClipPlanes planes = make_clip_planes(clamp, sp.vp_half_w, sp.vp_center_x, sp.vp_half_h, sp.vp_center_y);
+    const ClipPlanes planes = variant == 2
+                                  ? other
+                                  : make_clip_planes(clamp, sp.vp_half_w, sp.vp_center_x, sp.vp_half_h, sp.vp_center_y);
     const OutcodeTester outcode_of(planes);
     const VertexBatch batch(planes, sp, kInvalid);
     for (int round = 0; round < 4000; ++round) {
@@ -129,6 +140,13 @@ TEST(DepthSetup, VertexBatchMatchesOneVertexAtATime) {
           case 1: w[l] = inf; break;
           case 2: w[l] = 0.0f; break;
           case 3: z[l] = -inf; break;
+          // On a plane (distance ±0), and signed zeros.
+          case 4: x[l] = w[l]; break;
+          case 5: x[l] = -w[l]; break;
+          case 6: y[l] = w[l], z[l] = -w[l]; break;
+          case 7: y[l] = -w[l], z[l] = w[l]; break;
+          case 8: x[l] = -0.0f, y[l] = 0.0f, z[l] = -0.0f, w[l] = 0.0f; break;
+          case 9: x[l] = 0.0f, w[l] = -0.0f; break;
           default: break;
         }
       }
