@@ -59,7 +59,9 @@ double max_difference(glref::Context& gl, const Case& c, bool linear, const std:
     fractional += ref[i] > 0.0f && ref[i] < 1.0f;
   }
   // The coordinates must exercise the filter: many results strictly between 0 and 1 when LINEAR.
-  if (linear) EXPECT_GT(fractional, coords.size() / 4) << to_string(c.target.format());
+  if (linear) {
+    EXPECT_GT(fractional, coords.size() / 4) << to_string(c.target.format());
+  }
   return worst;
 }
 

@@ -27,7 +27,9 @@ TEST(BuiltinRender, EveryBuiltinSceneRenders) {
     for (const auto& l : scene.lights)
       has_shadowed_light |= l.shadow.technique == scenes::ShadowTechnique::shadowmap &&
                             (l.type == scenes::LightType::directional || l.type == scenes::LightType::spot);
-    if (has_shadowed_light) EXPECT_FALSE(maps.empty()) << info.name;
+    if (has_shadowed_light) {
+      EXPECT_FALSE(maps.empty()) << info.name;
+    }
     size_t omni = 0;
     for (const auto& l : scene.lights) {
       const auto t = l.shadow.technique;

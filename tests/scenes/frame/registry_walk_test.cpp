@@ -71,8 +71,9 @@ TEST(RegistryWalk, EveryBuiltTechniqueHasOneImplementationAndNoOtherDoes) {
     size_t rows = 0;
     for (const tech::TechniqueImpl& i : tech::registry()) rows += i.id == t.id;
     EXPECT_EQ(rows, t.built ? 1u : 0u) << t.name;
-    if (const tech::TechniqueImpl* i = tech::find_impl(t.id))
+    if (const tech::TechniqueImpl* i = tech::find_impl(t.id)) {
       EXPECT_EQ(i->plan != nullptr, i->application == tech::Application::light_visibility) << t.name;
+    }
   }
 }
 

@@ -120,10 +120,13 @@ TEST(OmniMap, PyramidDirectionsLandInTheirRegion) {
     const Texel e{int(s * float(n)), int(t * float(n))};
     // The texel lies in the region's half of the map.
     const int h = n / 2;
-    if (c.region == 0) EXPECT_GE(e.y, h);
-    if (c.region == 1) EXPECT_GE(e.x, h);
-    if (c.region == 2) EXPECT_LT(e.y, h);
-    if (c.region == 3) EXPECT_LT(e.x, h);
+    switch (c.region) {
+      case 0: EXPECT_GE(e.y, h); break;
+      case 1: EXPECT_GE(e.x, h); break;
+      case 2: EXPECT_LT(e.y, h); break;
+      case 3: EXPECT_LT(e.x, h); break;
+      default: ADD_FAILURE() << "region " << c.region;
+    }
     check_direction(tech::OmniKind::pyramid, light, f.to_world_dir(p), e, n);
   }
 }

@@ -160,7 +160,9 @@ TEST(ViewFollowing, ExportedMapsCarryEveryPass) {
     EXPECT_EQ(p.label, "cascade" + std::to_string(k));
     EXPECT_EQ(p.viewport.x, int(k % 2) * 256);
     EXPECT_EQ(p.viewport.y, int(k / 2) * 256);
-    if (k > 0) EXPECT_NE(p.world_to_ndc, atlas[0].map.passes[k - 1].world_to_ndc);
+    if (k > 0) {
+      EXPECT_NE(p.world_to_ndc, atlas[0].map.passes[k - 1].world_to_ndc);
+    }
   }
   o.params["map_layout"] = std::string("separate");
   const auto separate = frame::export_maps(frame::render_frame(scene, o, r));
