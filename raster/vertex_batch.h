@@ -86,9 +86,8 @@ class VertexBatch {
     }
   }
 
- private:
   // Whether cp holds make_clip_planes()'s planes, in its order: x <= w, x >= −w, y <= w, y >= −w, then with six
-  // planes z >= −w, z <= w.
+  // planes z >= −w, z <= w. Such planes take the direct distances in run().
   static bool is_frustum(const ClipPlanes& cp) {
     static constexpr float kNormals[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 1}, {0, -1, 0, 1},
                                              {0, 1, 0, 1},  {0, 0, 1, 1}, {0, 0, -1, 1}};
@@ -101,6 +100,7 @@ class VertexBatch {
     return true;
   }
 
+ private:
   ClipPlanes planes_;
   SetupParams sp_;
   unsigned invalid_;

@@ -167,10 +167,11 @@ inline __m256i pair_offsets8(const Pcf8Level& L, __m256i xb, __m256i yb) {
 // address past the map needs no test. `off` are element offsets of texel_bytes each.
 inline constexpr int kPrefetchTexels = 32;
 inline void prefetch_ahead8(const std::byte* base, ptrdiff_t row_bytes, int texel_bytes, int off0, int off4) {
-  const std::byte* a = base + ptrdiff_t(off0 + kPrefetchTexels) * texel_bytes;
-  const std::byte* b = base + ptrdiff_t(off4 + kPrefetchTexels) * texel_bytes;
-  __builtin_prefetch(a, 0, 3), __builtin_prefetch(a + row_bytes, 0, 3);
-  __builtin_prefetch(b, 0, 3), __builtin_prefetch(b + row_bytes, 0, 3);
+  // Addresses as integers: past the map's end they are no pointers into it.
+  const uintptr_t a = reinterpret_cast<uintptr_t>(base) + uintptr_t(ptrdiff_t(off0 + kPrefetchTexels) * texel_bytes);
+  const uintptr_t b = reinterpret_cast<uintptr_t>(base) + uintptr_t(ptrdiff_t(off4 + kPrefetchTexels) * texel_bytes);
+  const uintptr_t next_row = uintptr_t(row_bytes);
+  for (const uintptr_t p : {a, a + next_row, b, b + next_row}) __builtin_prefetch(reinterpret_cast<const void*>(p), 0, 3);
 }
 
 template <TexelFormat F>

@@ -114,15 +114,19 @@ TEST(DepthSetup, VertexBatchMatchesOneVertexAtATime) {
                   ClipPlane{{1, 0, 0, 1}}, ClipPlane{{0, -1, 0, 1}}, ClipPlane{{0, 0, 1, 1}},
                   ClipPlane{{0.5f, 0.25f, 0, 1}, 0.125f}};
   other.count = 7;
-  for (int variant = 0; variant < 3; ++variant) {
+  for (int variant = 0; variant < 4; ++variant) {
     const bool clamp = variant == 1;
     DrawState s;
     s.depth_clamp = clamp;
     s.viewport = Rect{-30, 17, 901, 555};
     const SetupParams sp = make_setup_params(s, 800, 600, DepthFormat::d24);
-    const ClipPlanes planes = variant == 2
-                                  ? other
-                                  : make_clip_planes(clamp, sp.vp_half_w, sp.vp_center_x, sp.vp_half_h, sp.vp_center_y);
+    ClipPlanes planes = make_clip_planes(clamp, sp.vp_half_w, sp.vp_center_x, sp.vp_half_h, sp.vp_center_y);
+    // Variant 0 and 1: the frustum, with and without the depth planes, which take the direct distances.
+    // Variant 2: seven planes. Variant 3: the frustum's six with near and far swapped (still six, so only the
+    // normals tell it apart); both take the general path.
+    if (variant == 2) planes = other;
+    if (variant == 3) std::swap(planes.planes[4], planes.planes[5]);
+    ASSERT_EQ(VertexBatch::is_frustum(planes), variant < 2) << "variant " << variant;
     const OutcodeTester outcode_of(planes);
     const VertexBatch batch(planes, sp, kInvalid);
     for (int round = 0; round < 4000; ++round) {
@@ -147,6 +151,9 @@ TEST(DepthSetup, VertexBatchMatchesOneVertexAtATime) {
           case 7: y[l] = -w[l], z[l] = w[l]; break;
           case 8: x[l] = -0.0f, y[l] = 0.0f, z[l] = -0.0f, w[l] = 0.0f; break;
           case 9: x[l] = 0.0f, w[l] = -0.0f; break;
+          // Distances that overflow to ±infinity.
+          case 10: x[l] = 3e38f, y[l] = -3e38f, w[l] = 3e38f; break;
+          case 11: z[l] = -3e38f, w[l] = 2e38f; break;
           default: break;
         }
       }
