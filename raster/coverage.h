@@ -20,14 +20,16 @@ SHADOWLAB_ISA_BEGIN
 // Lanes [lo, hi] of an 8-lane row.
 inline unsigned lane_range_mask(int lo, int hi) { return ((2u << hi) - 1u) & ~((1u << lo) - 1u); }
 
-// Edge k's F(x, y) = a·x + b·y − t at pixel (x, y), exact in int64 (limits.h); edge_value_narrow() gives the same
-// modulo 2^32, which is the value itself where it fits int32 (narrow triangles near their box, limits.h).
-// DepthSetup has the same pair (depth_setup.h): the row stage below works on either record.
+// Edge k's F(x, y) = a·x + b·y − t at pixel (x, y), exact in int64 (limits.h); narrow_edge_lanes() gives the same
+// for eight pixels (x[l], y[l]) at once, lane by lane and modulo 2^32, which is the value itself where it fits
+// int32 (narrow triangles near their box, limits.h). DepthSetup has the same pair (depth_setup.h): the row stage
+// below works on either record.
 inline int64_t edge_value(const TriangleSetup& t, int k, int64_t x, int64_t y) {
   return t.a[k] * x + t.b[k] * y - t.t[k];
 }
-inline int32_t edge_value_narrow(const TriangleSetup& t, int k, int32_t x, int32_t y) {
-  return int32_t(uint32_t(t.a[k]) * uint32_t(x) + uint32_t(t.b[k]) * uint32_t(y) - uint32_t(t.t[k]));
+inline simd::VecI32 narrow_edge_lanes(const TriangleSetup& t, int k, simd::VecI32 x, simd::VecI32 y) {
+  using simd::VecI32;
+  return VecI32::splat(t.a[k]) * x + VecI32::splat(t.b[k]) * y - VecI32::splat(int32_t(t.t[k]));
 }
 
 // Per-row edge values of the (up to three) edges that cross a region, stepped one row at a time.
@@ -42,6 +44,15 @@ struct EdgeRows {
       f[k] = crosses[k] ? VecI32::splat(int32_t(f_start[k])) + VecI32::splat(t.a[k]) * VecI32::iota()
                         : VecI32::splat(0);
       step[k] = VecI32::splat(crosses[k] ? t.b[k] : 0);
+    }
+  }
+  // A narrow triangle's edges, every one taken as crossing, from the lanes' pixels (x[l], y[l]) of the first row
+  // (narrow_edge_lanes: straight from the record's fields, no scalar edge value first).
+  template <class Tri>
+  EdgeRows(const Tri& t, simd::VecI32 x, simd::VecI32 y) {
+    for (int k = 0; k < 3; ++k) {
+      f[k] = narrow_edge_lanes(t, k, x, y);
+      step[k] = simd::VecI32::splat(t.b[k]);
     }
   }
   simd::Mask inside() const { return simd::non_negative(f[0] | f[1] | f[2]); }
@@ -69,6 +80,17 @@ struct EdgeRowPairs {
         continue;
       }
       const VecI32 upper = VecI32::splat(int32_t(f_start[k])) + VecI32::splat(t.a[k]) * VecI32::iota();
+      f[k] = VecI32x16::rows(upper, upper + VecI32::splat(t.b[k]));
+      step[k] = VecI32x16::splat(int32_t(uint32_t(t.b[k]) * 2u));
+    }
+  }
+  // A narrow triangle's edges, as EdgeRows': (x[l], y[l]) are the upper row's pixels.
+  template <class Tri>
+  EdgeRowPairs(const Tri& t, simd::VecI32 x, simd::VecI32 y) {
+    using simd::VecI32;
+    using simd::VecI32x16;
+    for (int k = 0; k < 3; ++k) {
+      const VecI32 upper = narrow_edge_lanes(t, k, x, y);
       f[k] = VecI32x16::rows(upper, upper + VecI32::splat(t.b[k]));
       step[k] = VecI32x16::splat(int32_t(uint32_t(t.b[k]) * 2u));
     }
@@ -236,11 +258,8 @@ inline void rasterize(const Tri& t, const PixelRect& r, const Stage& stage) {
       const int32_t xs = std::min(x0, (x0 | (kTileSize - 1)) - (kBlockSize - 1));  // segment stays in the tile
       const RowGroup<kRows> group{lane_range_mask(x0 - xs, x1 - xs)};
       const int32_t ys = y0 & -kRows;  // groups start at a multiple of kRows: all their rows are in the tile
-      int64_t f_start[3];
-      const bool crosses[3] = {true, true, true};
-      for (int k = 0; k < 3; ++k)  // exact modulo 2^32, and the value fits int32 (limits.h, kNarrowCoefBits)
-        f_start[k] = edge_value_narrow(t, k, xs, ys);
-      typename RowGroup<kRows>::Edges edges(t, f_start, crosses);
+      // The edge values are exact modulo 2^32, and they fit int32 there (limits.h, kNarrowCoefBits).
+      typename RowGroup<kRows>::Edges edges(t, simd::VecI32::splat(xs) + simd::VecI32::iota(), simd::VecI32::splat(ys));
       const auto cols = stage.columns(t, xs);
       typename Stage::BlockMax unused;
       auto at = stage.cursor(xs, ys);

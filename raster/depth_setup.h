@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "raster/primitive.h"
+#include "raster/simd/vec.h"
 #include "raster/simd/isa.h"
 
 namespace raster {
@@ -29,14 +30,16 @@ inline DepthSetup pack_depth_setup(const TriangleSetup& t) {
   return d;
 }
 
-// The edge values of coverage.h (edge_value, edge_value_narrow) and its narrow test, on the compact record:
+// The edge values of coverage.h (edge_value, narrow_edge_lanes) and its narrow test, on the compact record:
 // F(x, y) = f0 + a·(x − min_x) + b·(y − min_y), which is a·x + b·y − t exactly (int64), or modulo 2^32.
 inline bool is_narrow(const DepthSetup&) { return true; }
 inline int64_t edge_value(const DepthSetup& d, int k, int64_t x, int64_t y) {
   return d.f0[k] + d.a[k] * (x - d.min_x) + d.b[k] * (y - d.min_y);
 }
-inline int32_t edge_value_narrow(const DepthSetup& d, int k, int32_t x, int32_t y) {
-  return int32_t(uint32_t(d.f0[k]) + uint32_t(d.a[k]) * uint32_t(x - d.min_x) + uint32_t(d.b[k]) * uint32_t(y - d.min_y));
+inline simd::VecI32 narrow_edge_lanes(const DepthSetup& d, int k, simd::VecI32 x, simd::VecI32 y) {
+  using simd::VecI32;
+  return VecI32::splat(d.f0[k]) + VecI32::splat(d.a[k]) * (x - VecI32::splat(d.min_x)) +
+         VecI32::splat(d.b[k]) * (y - VecI32::splat(d.min_y));
 }
 
 // The full record of a packed triangle: every field as setup made it, except the back-facing bit (prim is 0).

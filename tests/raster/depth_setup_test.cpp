@@ -39,16 +39,24 @@ void expect_round_trip(const TriangleSetup& t, const std::string& what) {
   ASSERT_EQ(e.max_y, t.max_y) << what;
   ASSERT_EQ(std::memcmp(&e.z_a0, &t.z_a0, 4 * sizeof(float)), 0) << what;
   ASSERT_EQ(e.flags, t.flags) << what;
-  const int32_t xs[] = {t.min_x - kBlockSize, t.min_x, t.max_x, t.max_x + kBlockSize};
   const int32_t ys[] = {t.min_y - kBlockSize, t.min_y, t.max_y, t.max_y + kBlockSize};
+  // Eight-pixel rows as the narrow path takes them (x .. x + 7), reaching the box's corners and one block past.
+  const int32_t xs[] = {t.min_x - kBlockSize, t.min_x, t.max_x - (kBlockSize - 1), t.max_x + 1};
+  using simd::VecI32;
   for (int k = 0; k < 3; ++k)
     for (int32_t x : xs)
       for (int32_t y : ys) {
-        const int64_t f = edge_value(t, k, x, y);
-        ASSERT_EQ(edge_value(d, k, x, y), f) << what;
-        ASSERT_LT(std::abs(f), int64_t(1) << 31) << what;  // limits.h: narrow edge values fit int32 there
-        ASSERT_EQ(edge_value_narrow(d, k, x, y), int32_t(f)) << what;
-        ASSERT_EQ(edge_value_narrow(t, k, x, y), int32_t(f)) << what;
+        const VecI32 lane_x = VecI32::splat(x) + VecI32::iota(), lane_y = VecI32::splat(y);
+        alignas(32) uint32_t from_d[8], from_t[8];
+        narrow_edge_lanes(d, k, lane_x, lane_y).store_u32(from_d);
+        narrow_edge_lanes(t, k, lane_x, lane_y).store_u32(from_t);
+        for (int l = 0; l < 8; ++l) {
+          const int64_t f = edge_value(t, k, x + l, y);
+          ASSERT_EQ(edge_value(d, k, x + l, y), f) << what;
+          ASSERT_LT(std::abs(f), int64_t(1) << 31) << what;  // limits.h: narrow edge values fit int32 there
+          ASSERT_EQ(int32_t(from_d[l]), int32_t(f)) << what << ", edge " << k << ", lane " << l;
+          ASSERT_EQ(int32_t(from_t[l]), int32_t(f)) << what << ", edge " << k << ", lane " << l;
+        }
       }
 }
 
