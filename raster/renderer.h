@@ -233,7 +233,8 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   const bool stream_bins = !kShaded && ntri * sizeof(DepthSetup) >= detail::kStreamBinsBytes;
   while (chunks_.size() < nchunks) chunks_.push_back(std::make_unique<Chunk>());
   // One chunk's front end, reading vertex i's outcode and window position at codes[i − base], win[i − base].
-  auto front = [&](size_t c, const unsigned* codes, const WindowVertex* win, uint32_t base) {
+  // `in_range`: the chunk's indices are known to be below nv (its range was measured), so none is tested again.
+  auto front = [&](size_t c, const unsigned* codes, const WindowVertex* win, uint32_t base, bool in_range) {
     Chunk& ch = *chunks_[c];
     ChunkBins<Record>& bins = bins_of(ch);
     bins.reset(grid);
@@ -284,7 +285,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       uint32_t idx[3];
       for (int k = 0; k < 3; ++k) {
         idx[k] = indices.empty() ? uint32_t(3 * i + k) : indices[3 * i + k];
-        if (idx[k] >= nv)
+        if (!in_range && idx[k] >= nv)
           throw DrawError("index " + std::to_string(idx[k]) + " at position " + std::to_string(3 * i + k) +
                           " is out of range (" + std::to_string(nv) + " vertices)");
       }
@@ -339,10 +340,10 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       timed(front_busy_ns, [&] {
         Chunk& ch = *chunks_[c];
         const size_t first = c * chunk_tris, end = std::min(ntri, first + chunk_tris);
-        uint32_t lo = ~0u, hi = 0;
-        for (size_t i = 3 * first; i < 3 * end; ++i) {
-          const uint32_t v = indices.empty() ? uint32_t(i) : indices[i];
-          lo = std::min(lo, v), hi = std::max(hi, v);
+        uint32_t lo = uint32_t(3 * first), hi = uint32_t(3 * end - 1);  // a non-indexed draw's range
+        if (!indices.empty()) {
+          lo = ~0u, hi = 0;
+          for (size_t i = 3 * first; i < 3 * end; ++i) lo = std::min(lo, indices[i]), hi = std::max(hi, indices[i]);
         }
         ch.range_lo = lo, ch.range_hi = hi;
       });
@@ -363,7 +364,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
           unsigned* codes = ch.codes.get<unsigned>(hi - lo + 1);
           WindowVertex* win = ch.win.get<WindowVertex>(hi - lo + 1);
           shade_vertices(lo, size_t(hi) + 1, codes, win);
-          front(c, codes, win, lo);
+          front(c, codes, win, lo, true);
           ch.pending = false;
         });
       });
@@ -374,7 +375,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   if (pending) {
     shade_all_vertices();
     pool_.parallel_for(nchunks, [&](size_t c) {
-      if (chunks_[c]->pending) timed(front_busy_ns, [&] { front(c, all_codes, all_win, 0); });
+      if (chunks_[c]->pending) timed(front_busy_ns, [&] { front(c, all_codes, all_win, 0, false); });
     });
   }
 

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -168,6 +170,34 @@ TEST(State, InvalidDrawsAreRefused) {
   EXPECT_THROW(r.draw(RenderTargets{}, DrawState{}, ClipSpaceDepthShader{}, std::span<const glm::vec4>(v)), DrawError);
   EXPECT_THROW(DepthTarget(0, 8, DepthFormat::d16), TargetSizeError);
   EXPECT_THROW(DepthTarget(8, 16385, DepthFormat::d16), TargetSizeError);
+}
+
+// A soup's chunks each shade their own vertices and skip the per-index test (renderer.h): an index out of range in
+// any chunk, first, middle or last, must still send the draw the checked way, which names the index and its
+// position, at any thread count; the soup itself draws.
+TEST(State, OutOfRangeIndexOfAManyChunkDrawIsRefused) {
+  const auto soup = bench::make_soup(60000, 30.0, 512, 11);
+  const std::span<const glm::vec4> positions(soup.positions);
+  const uint32_t nv = uint32_t(soup.positions.size());
+  for (int threads : {0, 2, 7}) {
+    Renderer r(threads);
+    for (size_t at : {size_t(0), soup.indices.size() / 2 + 1, soup.indices.size() - 1}) {
+      for (uint32_t bad : {nv, ~0u}) {
+        std::vector<uint32_t> indices = soup.indices;
+        indices[at] = bad;
+        DepthTarget d(512, 512, DepthFormat::d32f);
+        try {
+          r.draw(RenderTargets{&d}, DrawState{}, ClipSpaceDepthShader{}, positions, indices);
+          ADD_FAILURE() << "index " << bad << " at " << at << " drew, threads " << threads;
+        } catch (const DrawError& e) {
+          const std::string expected = "index " + std::to_string(bad) + " at position " + std::to_string(at) + " ";
+          EXPECT_EQ(std::string(e.what()).rfind(expected, 0), 0u) << e.what();
+        }
+      }
+    }
+    DepthTarget d(512, 512, DepthFormat::d32f);
+    EXPECT_NO_THROW(r.draw(RenderTargets{&d}, DrawState{}, ClipSpaceDepthShader{}, positions, soup.indices));
+  }
 }
 
 // The same soup, drawn at 0, 1, 2, 7 and 16 threads (so in 4 to 64 front-end chunks), gives bit-identical depth in every format.
