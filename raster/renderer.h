@@ -16,6 +16,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "raster/assembly.h"
 #include "raster/bins.h"
 #include "raster/clip.h"
 #include "raster/coverage.h"
@@ -281,7 +282,25 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     auto take = [&](SetupResult r, const auto& t) {
       if (count(r)) keep(t);
     };
+    // Eight triangles at a time where they can be set up in batches: a group of triangles that are each either
+    // rejected or inside the view volume goes straight to the batch; any other group (one to clip, an index out
+    // of range) goes through the loop below one triangle at a time.
+    size_t one_by_one_until = 0;
     for (size_t i = c * chunk_tris; i < end; ++i) {
+      if constexpr (!kShaded) {
+        if (batched && i >= one_by_one_until && end - i >= 8) {
+          TriangleGroup g;
+          if (assemble_group(indices, i, codes, base, uint32_t(nv), !in_range, detail::kInvalidVertex, g) &&
+              g.clipped == 0) {
+            ch.stats.triangles += 8;
+            ch.stats.rejected += uint64_t(std::popcount(g.rejected));
+            batch.push_lanes(g, g.inside, take);
+            i += 7;
+            continue;
+          }
+          one_by_one_until = i + 8;
+        }
+      }
       uint32_t idx[3];
       for (int k = 0; k < 3; ++k) {
         idx[k] = indices.empty() ? uint32_t(3 * i + k) : indices[3 * i + k];

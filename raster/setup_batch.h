@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "raster/assembly.h"
 #include "raster/depth_setup.h"
 #include "raster/limits.h"
 #include "raster/primitive.h"
@@ -51,6 +52,22 @@ class SetupBatch {
   void push(uint32_t i0, uint32_t i1, uint32_t i2, Sink&& sink) {
     idx_[0][n_] = int32_t(i0), idx_[1][n_] = int32_t(i1), idx_[2][n_] = int32_t(i2);
     if (++n_ == 8) flush(sink);
+  }
+
+  // Queues the triangles of an assembled group whose bits are set in `lanes`, in lane order, as push() one at a
+  // time would; a whole group on an empty queue is taken as it is.
+  template <class Sink>
+  void push_lanes(const TriangleGroup& g, unsigned lanes, Sink&& sink) {
+    if (n_ == 0 && lanes == 0xFFu) {
+      for (int k = 0; k < 3; ++k) simd::VecI32::load(g.vertex[k]).store_u32(reinterpret_cast<uint32_t*>(idx_[k]));
+      n_ = 8;
+      flush(sink);
+      return;
+    }
+    for (; lanes != 0; lanes &= lanes - 1) {
+      const int l = std::countr_zero(lanes);
+      push(uint32_t(g.vertex[0][l]), uint32_t(g.vertex[1][l]), uint32_t(g.vertex[2][l]), sink);
+    }
   }
 
   // Sets up whatever is queued (a partial batch before a clipped triangle, to keep submission order).

@@ -157,6 +157,19 @@ inline void deinterleave_rows4(VecF32 s0, VecF32 t0, VecF32 s1, VecF32 t1, VecF3
   c.v = _mm256_shuffle_ps(u1, u3, 0x44), d.v = _mm256_shuffle_ps(u1, u3, 0xEE);
 }
 
+// Eight records of three (p[3l], p[3l + 1], p[3l + 2], a triangle's indices) split into lanes: a[l] = p[3l],
+// b[l] = p[3l + 1], c[l] = p[3l + 2]. Three loads, each lane blended from the load that holds its element, and
+// one permute per result.
+inline void load_stride3(const uint32_t* p, VecI32& a, VecI32& b, VecI32& c) {
+  const __m256i x = VecI32::load_u32(p).v, y = VecI32::load_u32(p + 8).v, z = VecI32::load_u32(p + 16).v;
+  const __m256i ta = _mm256_blend_epi32(_mm256_blend_epi32(x, y, 0x92), z, 0x24);  // 0 9 18 3 12 21 6 15
+  const __m256i tb = _mm256_blend_epi32(_mm256_blend_epi32(x, y, 0x24), z, 0x49);  // 16 1 10 19 4 13 22 7
+  const __m256i tc = _mm256_blend_epi32(_mm256_blend_epi32(x, y, 0x49), z, 0x92);  // 8 17 2 11 20 5 14 23
+  a.v = _mm256_permutevar8x32_epi32(ta, _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
+  b.v = _mm256_permutevar8x32_epi32(tb, _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6));
+  c.v = _mm256_permutevar8x32_epi32(tc, _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+}
+
 // ---- For the depth-only back end and the SIMD triangle setup.
 // The largest lane (lanes are not NaN).
 inline float reduce_max(VecF32 a) {

@@ -95,6 +95,11 @@ inline void store_rows4_interleaved(VecF32 a, VecF32 b, VecF32 c, VecF32 d, floa
     r1[4 * i] = a.v[i + 4], r1[4 * i + 1] = b.v[i + 4], r1[4 * i + 2] = c.v[i + 4], r1[4 * i + 3] = d.v[i + 4];
   }
 }
+// Eight records of three split into lanes: a[l] = p[3l], b[l] = p[3l + 1], c[l] = p[3l + 2].
+inline void load_stride3(const uint32_t* p, VecI32& a, VecI32& b, VecI32& c) {
+  for (int l = 0; l < 8; ++l)
+    a.v[l] = int32_t(p[3 * l]), b.v[l] = int32_t(p[3 * l + 1]), c.v[l] = int32_t(p[3 * l + 2]);
+}
 inline void deinterleave_rows4(VecF32 s0, VecF32 s1, VecF32& a, VecF32& b) {
   for (int i = 0; i < 4; ++i) a.v[i] = s0.v[2 * i], b.v[i] = s0.v[2 * i + 1], a.v[i + 4] = s1.v[2 * i], b.v[i + 4] = s1.v[2 * i + 1];
 }

@@ -27,17 +27,6 @@ std::array<float, 8> lanes(simd::VecF32 v) {
   return out;
 }
 
-// A depth-only shader's flat-white twin with a fragment stage: drawn through the shaded back end, which tests
-// every pixel and never consults hierarchical depth.
-struct FlatShader {
-  using Vertex = glm::vec4;
-  using Varyings = NoVaryings;
-  glm::vec4 vertex(const Vertex& v, Varyings&) const { return v; }
-  void fragment(const QuadIn<Varyings>&, QuadOut& out) const {
-    for (auto& c : out.color) c = glm::vec4(1.0f);
-  }
-};
-
 }  // namespace
 
 // Random triangles anywhere on a 2048² target, with steep and shallow depth planes and polygon offset: for each
@@ -137,7 +126,7 @@ TEST(HiZ, DepthOnlyDrawsMatchShadedDrawsThatSkipNothing) {
         }
         const std::span<const glm::vec4> vs(v);
         r.draw(RenderTargets{&fast}, s, ClipSpaceDepthShader{}, vs);
-        r.draw(RenderTargets{&slow, &color}, s, FlatShader{}, vs);
+        r.draw(RenderTargets{&slow, &color}, s, rtest::WhiteShader{}, vs);
         size_t differ = 0, written = 0;
         for (int y = 0; y < H; ++y)
           for (int x = 0; x < W; ++x) {

@@ -77,6 +77,17 @@ struct CountingShader {
   }
 };
 
+// ClipSpaceDepthShader's flat-white twin with a fragment stage: its draws go through the shaded back end, which
+// tests every pixel and never consults hierarchical depth, and through the front end one triangle at a time.
+struct WhiteShader {
+  using Vertex = glm::vec4;
+  using Varyings = raster::NoVaryings;
+  glm::vec4 vertex(const Vertex& v, Varyings&) const { return v; }
+  void fragment(const raster::QuadIn<Varyings>&, raster::QuadOut& out) const {
+    for (auto& c : out.color) c = glm::vec4(1.0f);
+  }
+};
+
 // Runs CountingShader over the triangles and returns the per-pixel counts.
 inline std::vector<uint32_t> count_coverage(raster::Renderer& r, int W, int H, const std::vector<glm::vec4>& pos,
                                             const std::vector<uint32_t>& idx, raster::DrawState state = {}) {

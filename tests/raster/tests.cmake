@@ -7,6 +7,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/depth_stage_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/state_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/setup_batch_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/assembly_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/depth_setup_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/quad_pair_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/clear_test.cpp

@@ -1,0 +1,152 @@
+// Primitive assembly eight triangles at a time (raster/assembly.h): each lane's vertex offsets and its outcome
+// (rejected, inside, to clip) are the one-triangle rule's, for indexed and non-indexed draws, with a base offset,
+// invalid vertices and indices out of range; and depth-only draws, whose front end takes such groups, count and
+// draw exactly as shaded draws of the same triangles, whose front end goes one triangle at a time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "raster/assembly.h"
+#include "tests/raster/raster_test_util.h"
+
+using namespace raster;
+
+namespace {
+
+constexpr unsigned kInvalid = 1u << 31;
+
+// The front end's rule for one triangle (renderer.h).
+enum class Outcome { rejected, inside, clipped };
+Outcome one_triangle(unsigned c0, unsigned c1, unsigned c2) {
+  if ((c0 & c1 & c2) != 0 || ((c0 | c1 | c2) & kInvalid)) return Outcome::rejected;
+  return (c0 | c1 | c2) == 0 ? Outcome::inside : Outcome::clipped;
+}
+
+}  // namespace
+
+TEST(Assembly, GroupsFollowTheOneTriangleRule) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> pick(0, 15);
+  int taken = 0, refused = 0, seen[3] = {0, 0, 0};
+  for (int round = 0; round < 4000; ++round) {
+    const bool indexed = round % 3 != 0, check = round % 2 == 0;
+    const uint32_t base = !indexed || round % 5 == 0 ? 0u : uint32_t(rng() % 1000);  // a soup starts at 0
+    const uint32_t nv = base + 200;
+    const size_t first = rng() % 40;
+    // Outcodes of vertices base … nv − 1: mostly inside, some outside one or two planes, a few invalid.
+    std::vector<unsigned> codes(nv - base);
+    for (unsigned& c : codes) {
+      const int p = pick(rng);
+      c = p < 9 ? 0u : p < 15 ? (1u << (p % 6)) | (p == 14 ? 1u << ((p + 1) % 6) : 0u) : kInvalid;
+    }
+    std::vector<uint32_t> indices;
+    if (indexed) {
+      indices.resize(3 * (first + 8));
+      for (uint32_t& i : indices) i = base + uint32_t(rng() % (nv - base));
+      if (round % 7 == 0) indices[3 * first + rng() % 24] = rng() % 2 ? nv : ~0u;  // out of range
+    }
+    const bool out_of_range = indexed && round % 7 == 0;
+    if (out_of_range && !check) continue;                           // callers check whenever ranges are unknown
+    TriangleGroup g;
+    const bool ok = assemble_group(indices, first, codes.data(), base, nv, check, kInvalid, g);
+    ASSERT_EQ(ok, !(out_of_range && check)) << "round " << round;
+    if (!ok) {
+      ++refused;
+      continue;
+    }
+    ++taken;
+    EXPECT_EQ(g.rejected | g.inside | g.clipped, 0xFFu);
+    EXPECT_EQ(g.rejected & g.inside, 0u);
+    EXPECT_EQ((g.rejected | g.inside) & g.clipped, 0u);
+    for (int l = 0; l < 8; ++l) {
+      unsigned c[3];
+      for (int k = 0; k < 3; ++k) {
+        const size_t at = 3 * (first + size_t(l)) + size_t(k);
+        const uint32_t index = indexed ? indices[at] : uint32_t(at);
+        ASSERT_EQ(g.vertex[k][l], int32_t(index - base)) << "round " << round << " lane " << l << " vertex " << k;
+        c[k] = codes[index - base];
+      }
+      const Outcome want = one_triangle(c[0], c[1], c[2]);
+      const Outcome got = g.rejected >> l & 1u ? Outcome::rejected : g.inside >> l & 1u ? Outcome::inside : Outcome::clipped;
+      EXPECT_EQ(got, want) << "round " << round << " lane " << l;
+      ++seen[int(want)];
+    }
+  }
+  // Every outcome and both answers occurred often enough to mean something.
+  EXPECT_GT(taken, 1000);
+  EXPECT_GT(refused, 50);
+  for (int n : seen) EXPECT_GT(n, 1000);
+}
+
+// Triangles in runs: long runs inside the view volume (whole groups set up in batches), and runs that mix
+// triangles inside, outside one plane (rejected), across a plane (clipped: sides and near plane) and with a NaN
+// vertex (rejected). Depth-only draws must report the same counts as shaded draws and leave the same buffer,
+// indexed over a shared vertex pool and as a soup, at 0 and 3 threads.
+TEST(Assembly, DepthOnlyDrawsCountAndDrawAsShadedDraws) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-0.9f, 0.9f), far_x(1.2f, 2.0f), zq(-0.9f, 0.9f);
+  std::vector<glm::vec4> pool;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  auto vertex = [&](int kind) {  // 0 inside, 1 right of the volume, 2 NaN, 3 in front of the near plane
+    glm::vec4 p(u(rng), u(rng), zq(rng), 1.0f);
+    if (kind == 1) p.x = far_x(rng);
+    if (kind == 2) p.y = nan;
+    if (kind == 3) p.z = -1.5f;
+    pool.push_back(p);
+    return uint32_t(pool.size() - 1);
+  };
+  std::vector<uint32_t> indices, inside;
+  auto triangle = [&](int a, int b, int c) {
+    for (int kind : {a, b, c}) {
+      if (kind == 0 && inside.size() > 8 && rng() % 3 == 0) {  // shared with an earlier triangle, as in meshes
+        indices.push_back(inside[rng() % inside.size()]);
+        continue;
+      }
+      indices.push_back(vertex(kind));
+      if (kind == 0) inside.push_back(indices.back());
+    }
+  };
+  for (int run = 0; run < 400; ++run) {
+    const int n = 1 + int(rng() % 24);
+    const bool mixed = run % 2 == 1;
+    for (int t = 0; t < n; ++t) {
+      const int kind = mixed ? int(rng() % 5) : 0;
+      if (kind == 0) triangle(0, 0, 0);
+      if (kind == 1) triangle(1, 1, 1);  // rejected
+      if (kind == 2) triangle(0, 0, 1);  // clipped against x = w
+      if (kind == 3) triangle(0, 2, 0);  // a NaN vertex: rejected
+      if (kind == 4) triangle(0, 3, 0);  // clipped against the near plane
+    }
+  }
+  std::vector<glm::vec4> soup;
+  for (uint32_t i : indices) soup.push_back(pool[i]);
+  const int W = 300, H = 200;
+  for (int threads : {0, 3}) {
+    Renderer r(threads);
+    for (const bool indexed : {true, false}) {
+      const std::span<const glm::vec4> pos = indexed ? std::span<const glm::vec4>(pool) : std::span<const glm::vec4>(soup);
+      const std::span<const uint32_t> idx = indexed ? std::span<const uint32_t>(indices) : std::span<const uint32_t>();
+      DepthTarget fast(W, H, DepthFormat::d32f), slow(W, H, DepthFormat::d32f);
+      ColorTarget color(W, H, ColorFormat::rgba8);
+      const DrawStats a = r.draw(RenderTargets{&fast}, DrawState{}, ClipSpaceDepthShader{}, pos, idx);
+      const DrawStats b = r.draw(RenderTargets{&slow, &color}, DrawState{}, rtest::WhiteShader{}, pos, idx);
+      const std::string what = std::string(indexed ? "indexed" : "soup") + ", " + std::to_string(threads) + " threads";
+      EXPECT_EQ(a.triangles, indices.size() / 3) << what;
+      EXPECT_EQ(a.triangles, b.triangles) << what;
+      EXPECT_EQ(a.clipped, b.clipped) << what;
+      EXPECT_EQ(a.rejected, b.rejected) << what;
+      EXPECT_EQ(a.culled, b.culled) << what;
+      EXPECT_EQ(a.degenerate, b.degenerate) << what;
+      EXPECT_EQ(a.setups, b.setups) << what;
+      EXPECT_GT(a.clipped, 200u) << what;
+      EXPECT_GT(a.rejected, 400u) << what;
+      EXPECT_GT(a.setups, a.triangles / 2) << what;
+      EXPECT_EQ(rtest::hash_depth(fast), rtest::hash_depth(slow)) << what;
+    }
+  }
+}
