@@ -23,8 +23,10 @@ struct TriangleGroup {
 // Assembles triangles first … first + 7 of a draw with `indices` (none: vertex 3i + k), reading vertex i's
 // outcode at codes[i − base]; `invalid` is the outcode bit of a vertex the vertex stage could not use (NaN or
 // infinite position), which rejects every triangle that uses it. Returns false, assembling nothing, when
-// `check_range` and an index is not below `nv`. The offsets must fit int32, which they do for the draws that
-// set up in batches (nv ≤ kBatchMaxVertices, setup_batch.h, with base 0; or a chunk's own compact range).
+// `check_range` and an index is not below `nv` (which must be below 2^31). Without `check_range` the caller
+// guarantees that every index i of the group has an outcode, base ≤ i < base + the outcodes' count (a chunk's
+// measured range). The offsets must fit int32, which they do for the draws that set up in batches
+// (nv ≤ kBatchMaxVertices, setup_batch.h, with base 0; or a chunk's own compact range).
 inline bool assemble_group(std::span<const uint32_t> indices, size_t first, const unsigned* codes, uint32_t base,
                            uint32_t nv, bool check_range, unsigned invalid, TriangleGroup& g) {
   using simd::Mask;
@@ -37,7 +39,7 @@ inline bool assemble_group(std::span<const uint32_t> indices, size_t first, cons
     simd::load_stride3(indices.data() + 3 * first, v[0], v[1], v[2]);
   }
   if (check_range) {
-    // Unsigned index < nv, for nv ≤ 2^31: the index read as int32 is non-negative and below nv.
+    // Unsigned index < nv, for nv < 2^31: the index read as int32 is non-negative and below nv.
     Mask ok = Mask::all();
     for (int k = 0; k < 3; ++k) ok = ok & simd::non_negative(v[k]) & simd::cmp_lt(v[k], VecI32::splat(int32_t(nv)));
     if (ok.bits() != Mask::all().bits()) return false;

@@ -95,6 +95,7 @@ inline void store_rows4_interleaved(VecF32 a, VecF32 b, VecF32 c, VecF32 d, floa
     r1[4 * i] = a.v[i + 4], r1[4 * i + 1] = b.v[i + 4], r1[4 * i + 2] = c.v[i + 4], r1[4 * i + 3] = d.v[i + 4];
   }
 }
+
 // Eight records of three split into lanes: a[l] = p[3l], b[l] = p[3l + 1], c[l] = p[3l + 2].
 inline void load_stride3(const uint32_t* p, VecI32& a, VecI32& b, VecI32& c) {
   for (int l = 0; l < 8; ++l)

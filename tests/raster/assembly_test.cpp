@@ -35,9 +35,10 @@ TEST(Assembly, GroupsFollowTheOneTriangleRule) {
   int taken = 0, refused = 0, seen[3] = {0, 0, 0};
   for (int round = 0; round < 4000; ++round) {
     const bool indexed = round % 3 != 0, check = round % 2 == 0;
-    const uint32_t base = !indexed || round % 5 == 0 ? 0u : uint32_t(rng() % 1000);  // a soup starts at 0
-    const uint32_t nv = base + 200;
     const size_t first = rng() % 40;
+    // A soup's chunk reads the outcodes of its own vertices, from its first one on: base ≤ 3 · first.
+    const uint32_t base = indexed ? (round % 5 == 0 ? 0u : uint32_t(rng() % 1000)) : uint32_t(rng() % (3 * first + 1));
+    const uint32_t nv = base + 200;
     // Outcodes of vertices base … nv − 1: mostly inside, some outside one or two planes, a few invalid.
     std::vector<unsigned> codes(nv - base);
     for (unsigned& c : codes) {
@@ -86,7 +87,8 @@ TEST(Assembly, GroupsFollowTheOneTriangleRule) {
 // Triangles in runs: long runs inside the view volume (whole groups set up in batches), and runs that mix
 // triangles inside, outside one plane (rejected), across a plane (clipped: sides and near plane) and with a NaN
 // vertex (rejected). Depth-only draws must report the same counts as shaded draws and leave the same buffer,
-// indexed over a shared vertex pool and as a soup, at 0 and 3 threads.
+// indexed over a shared vertex pool and as a soup, at 0 and 3 threads; with ALWAYS, where the last triangle
+// drawn at a pixel wins, the buffer shows the order they were set up in too.
 TEST(Assembly, DepthOnlyDrawsCountAndDrawAsShadedDraws) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(-0.9f, 0.9f), far_x(1.2f, 2.0f), zq(-0.9f, 0.9f);
@@ -127,26 +129,31 @@ TEST(Assembly, DepthOnlyDrawsCountAndDrawAsShadedDraws) {
   for (uint32_t i : indices) soup.push_back(pool[i]);
   const int W = 300, H = 200;
   for (int threads : {0, 3}) {
-    Renderer r(threads);
-    for (const bool indexed : {true, false}) {
-      const std::span<const glm::vec4> pos = indexed ? std::span<const glm::vec4>(pool) : std::span<const glm::vec4>(soup);
-      const std::span<const uint32_t> idx = indexed ? std::span<const uint32_t>(indices) : std::span<const uint32_t>();
-      DepthTarget fast(W, H, DepthFormat::d32f), slow(W, H, DepthFormat::d32f);
-      ColorTarget color(W, H, ColorFormat::rgba8);
-      const DrawStats a = r.draw(RenderTargets{&fast}, DrawState{}, ClipSpaceDepthShader{}, pos, idx);
-      const DrawStats b = r.draw(RenderTargets{&slow, &color}, DrawState{}, rtest::WhiteShader{}, pos, idx);
-      const std::string what = std::string(indexed ? "indexed" : "soup") + ", " + std::to_string(threads) + " threads";
-      EXPECT_EQ(a.triangles, indices.size() / 3) << what;
-      EXPECT_EQ(a.triangles, b.triangles) << what;
-      EXPECT_EQ(a.clipped, b.clipped) << what;
-      EXPECT_EQ(a.rejected, b.rejected) << what;
-      EXPECT_EQ(a.culled, b.culled) << what;
-      EXPECT_EQ(a.degenerate, b.degenerate) << what;
-      EXPECT_EQ(a.setups, b.setups) << what;
-      EXPECT_GT(a.clipped, 200u) << what;
-      EXPECT_GT(a.rejected, 400u) << what;
-      EXPECT_GT(a.setups, a.triangles / 2) << what;
-      EXPECT_EQ(rtest::hash_depth(fast), rtest::hash_depth(slow)) << what;
+    for (DepthFunc func : {DepthFunc::less, DepthFunc::always}) {
+      Renderer r(threads);
+      DrawState state;
+      state.depth_func = func;
+      for (const bool indexed : {true, false}) {
+        const std::span<const glm::vec4> pos = indexed ? std::span<const glm::vec4>(pool) : std::span<const glm::vec4>(soup);
+        const std::span<const uint32_t> idx = indexed ? std::span<const uint32_t>(indices) : std::span<const uint32_t>();
+        DepthTarget fast(W, H, DepthFormat::d32f), slow(W, H, DepthFormat::d32f);
+        ColorTarget color(W, H, ColorFormat::rgba8);
+        const DrawStats a = r.draw(RenderTargets{&fast}, state, ClipSpaceDepthShader{}, pos, idx);
+        const DrawStats b = r.draw(RenderTargets{&slow, &color}, state, rtest::WhiteShader{}, pos, idx);
+        const std::string what = std::string(indexed ? "indexed" : "soup") + ", " + std::to_string(threads) +
+                                 " threads, " + (func == DepthFunc::less ? "LESS" : "ALWAYS");
+        EXPECT_EQ(a.triangles, indices.size() / 3) << what;
+        EXPECT_EQ(a.triangles, b.triangles) << what;
+        EXPECT_EQ(a.clipped, b.clipped) << what;
+        EXPECT_EQ(a.rejected, b.rejected) << what;
+        EXPECT_EQ(a.culled, b.culled) << what;
+        EXPECT_EQ(a.degenerate, b.degenerate) << what;
+        EXPECT_EQ(a.setups, b.setups) << what;
+        EXPECT_GT(a.clipped, 200u) << what;
+        EXPECT_GT(a.rejected, 400u) << what;
+        EXPECT_GT(a.setups, a.triangles / 2) << what;
+        EXPECT_EQ(rtest::hash_depth(fast), rtest::hash_depth(slow)) << what;
+      }
     }
   }
 }
