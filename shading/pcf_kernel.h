@@ -6,8 +6,11 @@
 //   pcf_lequal_gather8 eight lookups at once in AVX2 lanes (d16, d24, d32f): a short path for groups whose
 //                      footprints lie inside the map, pcf_lequal_any8 for the others;
 //   pcf_lequal_x8      eight lookups in raster/simd lanes: gather8, or lane by lane (scalar builds, and d16 maps
-//                      one texel wide or high).
-// The only intrinsics in shading/: raster/simd's eight-lane types have no floor or gather.
+//                      one texel wide or high);
+//   pcf_lequal_gather16 sixteen lookups in one AVX-512 register (AVX-512 builds), the same short path as gather8,
+//                      its groups with a footprint not wholly inside the map going to x8 half by half;
+//   pcf_lequal_x16     sixteen lookups in raster/simd's sixteen-lane type: gather16, or two x8 halves.
+// The only intrinsics in shading/: raster/simd's lane types have no floor or gather.
 #pragma once
 #include <algorithm>
 #include <bit>
@@ -394,6 +397,140 @@ template <TexelFormat F, bool kBorderWrap>
 inline raster::simd::VecF32 pcf_lequal_x8(const TextureLevel& L, raster::simd::VecF32 s, raster::simd::VecF32 t,
                                           raster::simd::VecF32 ref, float border_depth) {
   return pcf_lequal_x8<F, kBorderWrap>(Pcf8Level(L), s, t, ref, border_depth);
+}
+
+// A level's constants for the SIMD forms: the eight-lane ones and, in AVX-512 builds, the same splatted to 512
+// bits. Built once per kernel (PcfKernel), not per lookup.
+struct Pcf16Level {
+  Pcf8Level half;
+#if defined(SHADOWLAB_SIMD_AVX512)
+  __m512 fwidth, fheight;
+  __m512i w2, h2;      // width − 2, height − 2
+  __m512i vpitch;      // 32-bit texels from one row to the next
+  __m512i vpitch16;    // 16-bit texels from one row to the next
+  explicit Pcf16Level(const TextureLevel& L)
+      : half(L), fwidth(_mm512_set1_ps(L.fwidth)), fheight(_mm512_set1_ps(L.fheight)),
+        w2(_mm512_set1_epi32(L.width - 2)), h2(_mm512_set1_epi32(L.height - 2)),
+        vpitch(_mm512_set1_epi32(int(L.row_bytes / 4))), vpitch16(_mm512_set1_epi32(int(L.row_bytes / 2))) {}
+#else
+  explicit Pcf16Level(const TextureLevel& L) : half(L) {}
+#endif
+};
+
+#if defined(SHADOWLAB_SIMD_AVX512)
+
+// Where an AVX-512 intrinsic has a form with a zeroing mask, the code below takes it with every lane set (as
+// raster/simd/vec_avx512.h does): GCC 12's plain forms pass an "undefined" register that -Wuninitialized then
+// reports wherever they are inlined. The instructions and results are the same.
+inline constexpr __mmask16 kAll16 = 0xFFFF;
+
+// The four texels of sixteen footprints whose pairs start at element offset off, as load_pairs8 reads eight:
+// d16 pairs gathered as one 32-bit word per lane and row; 32-bit texels read with scalar 8-byte loads, four
+// 128-bit pieces per vector. No prefetch here: on the 2-core AMD EPYC (Zen 5) a Poisson pass's sixteen-lane
+// lookups ran 1.14× slower with load_pairs8's prefetch (for lanes 0 and 4) than without, and 1.07× faster than
+// two eight-lane lookups with it (which measured alike with and without it there).
+template <TexelFormat F>
+inline void load_pairs16(const Pcf16Level& L, __m512i offv, __m512 tex[4]) {
+  if constexpr (F == TexelFormat::d16) {
+    const int* base = reinterpret_cast<const int*>(L.half.level.data);
+    const __m512i low = _mm512_set1_epi32(0xFFFF);
+    const __m512 maxcode = _mm512_set1_ps(65535.0f);
+    for (int r = 0; r < 2; ++r) {
+      const __m512i pair = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), kAll16, r ? _mm512_add_epi32(offv, L.vpitch16) : offv, base, 2);
+      tex[2 * r] = _mm512_div_ps(_mm512_maskz_cvtepi32_ps(kAll16, _mm512_and_si512(pair, low)), maxcode);
+      tex[2 * r + 1] = _mm512_div_ps(_mm512_maskz_cvtepi32_ps(kAll16, _mm512_maskz_srli_epi32(kAll16, pair, 16)), maxcode);
+    }
+  } else {
+    // Offsets to general registers two at a time, as load_pairs8 does; non-negative, so the odd lanes are the
+    // upper halves as they stand.
+    uint64_t off[16];
+    for (int k = 0; k < 4; ++k) {
+      const __m128i o = _mm512_maskz_extracti32x4_epi32(0xF, offv, k);
+      const uint64_t q0 = uint64_t(_mm_cvtsi128_si64(o)), q1 = uint64_t(_mm_extract_epi64(o, 1));
+      off[4 * k] = uint32_t(q0), off[4 * k + 1] = q0 >> 32, off[4 * k + 2] = uint32_t(q1), off[4 * k + 3] = q1 >> 32;
+    }
+    for (int r = 0; r < 2; ++r) {
+      const float* row = L.half.base + r * L.half.pitch;
+      auto pair2 = [&](int a, int b) {  // texels (off[a], off[a] + 1, off[b], off[b] + 1) of this row
+        const __m128 lo = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(row + off[a])));
+        return _mm_loadh_pi(lo, reinterpret_cast<const __m64*>(row + off[b]));
+      };
+      // 128-bit block k of each vector serves lanes 4k .. 4k + 3: pairs (4k, 4k + 1) in p01, (4k + 2, 4k + 3)
+      // in p23; the even elements are the x texels, the odd ones x + 1.
+      __m512 p01 = _mm512_castps128_ps512(pair2(0, 1)), p23 = _mm512_castps128_ps512(pair2(2, 3));
+      p01 = _mm512_insertf32x4(p01, pair2(4, 5), 1), p23 = _mm512_insertf32x4(p23, pair2(6, 7), 1);
+      p01 = _mm512_insertf32x4(p01, pair2(8, 9), 2), p23 = _mm512_insertf32x4(p23, pair2(10, 11), 2);
+      p01 = _mm512_insertf32x4(p01, pair2(12, 13), 3), p23 = _mm512_insertf32x4(p23, pair2(14, 15), 3);
+      tex[2 * r] = _mm512_maskz_shuffle_ps(kAll16, p01, p23, _MM_SHUFFLE(2, 0, 2, 0));
+      tex[2 * r + 1] = _mm512_maskz_shuffle_ps(kAll16, p01, p23, _MM_SHUFFLE(3, 1, 3, 1));
+    }
+  }
+}
+
+inline __m256 lower8(__m512 v) { return _mm512_extractf32x8_ps(v, 0); }
+inline __m256 upper8(__m512 v) { return _mm512_extractf32x8_ps(v, 1); }
+
+// Sixteen lookups at (s, t, ref) per lane, each equal to pcf_lequal bit for bit: the short path of
+// pcf_lequal_gather8 on sixteen lanes (the same operations: floor by roundscale, the unsigned-min inside test,
+// compares, the mask blends of blend_taps8 as AVX-512 mask moves); a group with any footprint not wholly inside
+// the map, or a map one texel wide or high, goes to pcf_lequal_x8 as two halves.
+template <TexelFormat F, bool kBorderWrap>
+inline __m512 pcf_lequal_gather16(const Pcf16Level& L, __m512 s, __m512 t, __m512 ref, float border_depth) {
+  static_assert(F == TexelFormat::d16 || F == TexelFormat::d24 || F == TexelFormat::d32f);
+  auto halves = [&] {  // pcf_lequal_x8, which also serves d16 maps one texel wide or high (lane by lane)
+    using raster::simd::VecF32;
+    const VecF32 lo = pcf_lequal_x8<F, kBorderWrap>(L.half, {lower8(s)}, {lower8(t)}, {lower8(ref)}, border_depth);
+    const VecF32 hi = pcf_lequal_x8<F, kBorderWrap>(L.half, {upper8(s)}, {upper8(t)}, {upper8(ref)}, border_depth);
+    return _mm512_insertf32x8(_mm512_castps256_ps512(lo.v), hi.v, 1);
+  };
+  if (L.half.tiny) [[unlikely]]
+    return halves();
+  const __m512 half = _mm512_set1_ps(0.5f);
+  const __m512 u = _mm512_sub_ps(_mm512_mul_ps(s, L.fwidth), half);  // texel_coord8
+  const __m512 v = _mm512_sub_ps(_mm512_mul_ps(t, L.fheight), half);
+  const __m512 fu = _mm512_maskz_roundscale_ps(kAll16, u, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+  const __m512 fv = _mm512_maskz_roundscale_ps(kAll16, v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+  const __m512i i0 = _mm512_maskz_cvttps_epi32(kAll16, fu), j0 = _mm512_maskz_cvttps_epi32(kAll16, fv);
+  const __m512i xb = _mm512_maskz_min_epu32(kAll16, i0, L.w2), yb = _mm512_maskz_min_epu32(kAll16, j0, L.h2);
+  if ((_mm512_cmpneq_epi32_mask(xb, i0) | _mm512_cmpneq_epi32_mask(yb, j0)) != 0) [[unlikely]]
+    return halves();
+  __m512 tex[4];
+  load_pairs16<F>(L, _mm512_add_epi32(_mm512_mullo_epi32(yb, F == TexelFormat::d16 ? L.vpitch16 : L.vpitch), xb),
+                  tex);
+  __m512 r = ref;
+  if constexpr (F != TexelFormat::d32f) r = _mm512_maskz_min_ps(kAll16, _mm512_maskz_max_ps(kAll16, ref, _mm512_setzero_ps()), _mm512_set1_ps(1.0f));
+  if constexpr (F == TexelFormat::d24) {  // raw bits decoded as compare_taps8 does
+    const __m512i mask = _mm512_set1_epi32(0xFFFFFF);
+    const __m512 maxcode = _mm512_set1_ps(16777215.0f);
+    for (int k = 0; k < 4; ++k)
+      tex[k] = _mm512_div_ps(_mm512_maskz_cvtepi32_ps(kAll16, _mm512_and_si512(_mm512_castps_si512(tex[k]), mask)), maxcode);
+  }
+  __mmask16 pass[4];
+  for (int k = 0; k < 4; ++k) pass[k] = _mm512_cmp_ps_mask(r, tex[k], _CMP_LE_OQ);
+  // blend_taps8: lerp(a, r0, r1) with r0, r1 in {0, 1} is 0, a, 1 − a or 1, picked by the two masks.
+  const __m512 a = _mm512_sub_ps(u, fu), b = _mm512_sub_ps(v, fv);
+  const __m512 one = _mm512_set1_ps(1.0f), one_minus_a = _mm512_sub_ps(one, a);
+  auto lerp01 = [&](__mmask16 m0, __mmask16 m1) {
+    return _mm512_mask_blend_ps(m0, _mm512_maskz_mov_ps(m1, a), _mm512_mask_blend_ps(m1, one_minus_a, one));
+  };
+  const __m512 xa = lerp01(pass[0], pass[1]), xc = lerp01(pass[2], pass[3]);
+  return _mm512_add_ps(xa, _mm512_mul_ps(b, _mm512_sub_ps(xc, xa)));
+}
+
+#endif  // SHADOWLAB_SIMD_AVX512
+
+// Sixteen lookups held in raster/simd's sixteen-lane type: lane l is pcf_lequal(L, (s[l], t[l], ref[l])), bit
+// for bit. One AVX-512 kernel where the build has it, else the eight-lane form on each half.
+template <TexelFormat F, bool kBorderWrap>
+inline raster::simd::VecF32x16 pcf_lequal_x16(const Pcf16Level& L, raster::simd::VecF32x16 s,
+                                              raster::simd::VecF32x16 t, raster::simd::VecF32x16 ref,
+                                              float border_depth) {
+#if defined(SHADOWLAB_SIMD_AVX512)
+  return {pcf_lequal_gather16<F, kBorderWrap>(L, s.v, t.v, ref.v, border_depth)};
+#else
+  return raster::simd::VecF32x16::rows(pcf_lequal_x8<F, kBorderWrap>(L.half, s.row0(), t.row0(), ref.row0(), border_depth),
+                                       pcf_lequal_x8<F, kBorderWrap>(L.half, s.row1(), t.row1(), ref.row1(), border_depth));
+#endif
 }
 
 // The common shadow case: compare LEQUAL, LINEAR without mips (so λ cannot matter), clamp_to_edge or

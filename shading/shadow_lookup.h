@@ -25,13 +25,19 @@ template <TexelFormat F, bool kBorderWrap>
 struct PcfKernel {
   TextureLevel level;
   float border_depth;
-  detail::Pcf8Level wide;  // the level's constants for the eight-lane form, splatted once
+  detail::Pcf16Level wide;  // the level's constants for the SIMD forms, splatted once
 
   PcfKernel(const TextureLevel& level, float border_depth) : level(level), border_depth(border_depth), wide(level) {}
   float operator()(glm::vec3 str) const { return detail::pcf_lequal<F, kBorderWrap>(level, str, border_depth); }
   // Eight lookups in SIMD lanes (for fragment_pair shaders), each equal to the one-lookup form.
   raster::simd::VecF32 operator()(raster::simd::VecF32 s, raster::simd::VecF32 t, raster::simd::VecF32 ref) const {
-    return detail::pcf_lequal_x8<F, kBorderWrap>(wide, s, t, ref, border_depth);
+    return detail::pcf_lequal_x8<F, kBorderWrap>(wide.half, s, t, ref, border_depth);
+  }
+  // Sixteen (two taps of a fragment_pair's eight points, say), each equal to the one-lookup form: one 512-bit
+  // kernel in AVX-512 builds.
+  raster::simd::VecF32x16 operator()(raster::simd::VecF32x16 s, raster::simd::VecF32x16 t,
+                                     raster::simd::VecF32x16 ref) const {
+    return detail::pcf_lequal_x16<F, kBorderWrap>(wide, s, t, ref, border_depth);
   }
 };
 // ... or the generic lookups for any other sampler.
@@ -44,6 +50,10 @@ struct GenericShadowKernel {
     s.store(ps), t.store(pt), ref.store(pr);
     for (int l = 0; l < 8; ++l) out[l] = (*this)(glm::vec3(ps[l], pt[l], pr[l]));
     return raster::simd::VecF32::load(out);
+  }
+  raster::simd::VecF32x16 operator()(raster::simd::VecF32x16 s, raster::simd::VecF32x16 t,
+                                     raster::simd::VecF32x16 ref) const {
+    return raster::simd::VecF32x16::rows((*this)(s.row0(), t.row0(), ref.row0()), (*this)(s.row1(), t.row1(), ref.row1()));
   }
 };
 

@@ -1,7 +1,9 @@
-// The filters of shadow_filters.h over up to eight points at once (a fragment_pair's live lanes): every tap is
-// one eight-lane lookup through a kernel of ShadowLookup2D::visit (PcfKernel or GenericShadowKernel), summed per
-// lane in the scalar filter's order with the same float operations, so lane l equals the scalar filter on
-// point l bit for bit. Per-lane tap offsets (stratified, rotated) are computed per lane by the scalar code.
+// The filters of shadow_filters.h over up to eight points at once (a fragment_pair's live lanes): a filter of one
+// tap is one eight-lane lookup through a kernel of ShadowLookup2D::visit (PcfKernel or GenericShadowKernel), a
+// filter of several takes its taps two at a time as one sixteen-lane lookup (one AVX-512 register where the build
+// has it); the taps are summed per lane in the scalar filter's order with the same float operations, so lane l
+// equals the scalar filter on point l bit for bit. Per-lane tap offsets (stratified, rotated) are computed per
+// lane by the scalar code.
 #pragma once
 #include <array>
 #include <type_traits>
@@ -34,6 +36,7 @@ struct SampleLanes {
 
 namespace lanes_detail {
 using raster::simd::VecF32;
+using raster::simd::VecF32x16;
 
 // One tap per lane at (s + ox, t + oy, ref): Taps' `c.st + offset` as a lane add.
 template <class K>
@@ -45,33 +48,57 @@ template <class K>
 VecF32 tap(const K& k, const SampleLanes& b, glm::vec2 off) {
   return tap(k, b, VecF32::splat(off.x), VecF32::splat(off.y));
 }
+// Two taps per lane in one sixteen-lane lookup: row 0 at offset (ox0, oy0), row 1 at (ox1, oy1).
+template <class K>
+VecF32x16 tap2(const K& k, const SampleLanes& b, VecF32 ox0, VecF32 oy0, VecF32 ox1, VecF32 oy1) {
+  return k(VecF32x16::rows(b.s + ox0, b.s + ox1), VecF32x16::rows(b.t + oy0, b.t + oy1), VecF32x16::rows(b.ref, b.ref));
+}
+template <class K>
+VecF32x16 tap2(const K& k, const SampleLanes& b, glm::vec2 off0, glm::vec2 off1) {
+  return tap2(k, b, VecF32::splat(off0.x), VecF32::splat(off0.y), VecF32::splat(off1.x), VecF32::splat(off1.y));
+}
 
 template <PoissonMode kMode, class K>
 VecF32 poisson(const K& k, const SampleLanes& b, const FilterParams& p, int n) {
   std::array<PoissonTaps<kMode>, 8> at;
   if constexpr (kMode != PoissonMode::fixed)
     for (size_t l = 0; l < 8; ++l) at[l] = PoissonTaps<kMode>(b.ctx[l], p);
-  // Tap i on every lane: one offset for all (fixed), or each lane's own.
-  const auto tap_i = [&](int i) {
+  // Tap i's offsets on every lane: one for all (fixed), or each lane's own.
+  const auto offsets = [&](int i, VecF32& ox, VecF32& oy) {
     if constexpr (kMode == PoissonMode::fixed) {
-      return tap(k, b, at[0].disc(i) * p.spread);
+      const glm::vec2 off = at[0].disc(i) * p.spread;
+      ox = VecF32::splat(off.x), oy = VecF32::splat(off.y);
     } else {
-      alignas(32) float ox[8], oy[8];
+      alignas(32) float x[8], y[8];
       for (size_t l = 0; l < 8; ++l) {
         const glm::vec2 off = at[l].disc(i) * p.spread;
-        ox[l] = off.x, oy[l] = off.y;
+        x[l] = off.x, y[l] = off.y;
       }
-      return tap(k, b, VecF32::load(ox), VecF32::load(oy));
+      ox = VecF32::load(x), oy = VecF32::load(y);
     }
+  };
+  // Taps i and i + 1 on every lane (n is even).
+  const auto taps_i = [&](int i) {
+    VecF32 ox0, oy0, ox1, oy1;
+    offsets(i, ox0, oy0), offsets(i + 1, ox1, oy1);
+    return tap2(k, b, ox0, oy0, ox1, oy1);
   };
   if (p.tutorial) {  // tutorial_step and tutorial_visibility per lane
     const VecF32 one = VecF32::splat(1.0f), weight = VecF32::splat(kTutorialTapWeight);
     VecF32 visibility = one;
-    for (int i = 0; i < n; ++i) visibility = visibility - weight * (one - tap_i(i));
+    for (int i = 0; i < n; i += 2) {
+      const VecF32x16 r = taps_i(i);
+      visibility = visibility - weight * (one - r.row0());
+      visibility = visibility - weight * (one - r.row1());
+    }
     return raster::simd::max(visibility, VecF32::splat(0.0f));
   }
   VecF32 sum = VecF32::splat(0.0f);
-  for (int i = 0; i < n; ++i) sum = sum + tap_i(i);
+  for (int i = 0; i < n; i += 2) {
+    const VecF32x16 r = taps_i(i);
+    sum = sum + r.row0();
+    sum = sum + r.row1();
+  }
   return raster::simd::div(sum, VecF32::splat(float(n)));
 }
 }  // namespace lanes_detail
@@ -84,8 +111,16 @@ raster::simd::VecF32 filter_lanes(const K& k, const SampleLanes& b, const Filter
   if constexpr (std::is_same_v<Filter, HardFilter> || std::is_same_v<Filter, PcfFilter>) {
     return tap(k, b, glm::vec2(0.0f));
   } else if constexpr (std::is_same_v<Filter, EarlyBailFilter>) {
+    using lanes_detail::tap2;
+    using raster::simd::VecF32x16;
+    static_assert(kOuterTaps.size() % 2 == 0 && kPoissonDisk.size() % 2 == 0);
     VecF32 outer = VecF32::splat(0.0f);
-    for (int i : kOuterTaps) outer = outer + tap(k, b, kPoissonDisk[size_t(i)] * p.spread);
+    for (size_t i = 0; i < kOuterTaps.size(); i += 2) {
+      const VecF32x16 r = tap2(k, b, kPoissonDisk[size_t(kOuterTaps[i])] * p.spread,
+                               kPoissonDisk[size_t(kOuterTaps[i + 1])] * p.spread);
+      outer = outer + r.row0();
+      outer = outer + r.row1();
+    }
     alignas(32) float o[8];
     outer.store(o);
     bool full = false;  // some lane whose outer taps disagree
@@ -93,7 +128,11 @@ raster::simd::VecF32 filter_lanes(const K& k, const SampleLanes& b, const Filter
     const VecF32 bail = outer * VecF32::splat(0.25f);
     if (!full) return bail;
     VecF32 sum = VecF32::splat(0.0f);
-    for (const glm::vec2& d : kPoissonDisk) sum = sum + tap(k, b, d * p.spread);
+    for (size_t i = 0; i < kPoissonDisk.size(); i += 2) {
+      const VecF32x16 r = tap2(k, b, kPoissonDisk[i] * p.spread, kPoissonDisk[i + 1] * p.spread);
+      sum = sum + r.row0();
+      sum = sum + r.row1();
+    }
     const VecF32 all = raster::simd::div(sum, VecF32::splat(16.0f));
     alignas(32) float r[8], a[8];
     bail.store(r), all.store(a);

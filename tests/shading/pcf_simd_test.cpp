@@ -1,8 +1,10 @@
-// The eight-lane PCF kernel (pcf_lequal_x8, PcfKernel's SIMD form, what fragment_pair shaders call) equals the
-// scalar kernel lane by lane, bit for bit: every fast-path format and wrap, textures as views of padded targets
-// and as tightly packed storage, sizes down to one texel, coordinates inside, on texel centres, on and beyond
-// every edge and corner, and non-finite; groups wholly inside the map (the kernel's short path) and groups with
-// a single lane outside it.
+// The eight- and sixteen-lane PCF kernels (pcf_lequal_x8 and pcf_lequal_x16, PcfKernel's SIMD forms, what
+// fragment_pair shaders and the multi-tap filters call) equal the scalar kernel lane by lane, bit for bit: every
+// fast-path format and wrap, textures as views of padded targets and as tightly packed storage, sizes down to
+// one texel, coordinates inside, on texel centres, on and beyond every edge and corner, and non-finite; groups
+// wholly inside the map (the kernels' short paths) and groups with a single lane outside it, in every lane
+// position of sixteen. The test binary is built for the first instruction set of SHADOWLAB_ISAS: the sixteen-lane
+// kernel's AVX-512 form is what a build configured with SHADOWLAB_ISAS=avx512 tests, on a CPU that has it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 namespace {
 
 using raster::simd::VecF32;
+using raster::simd::VecF32x16;
 using shading::TexelFormat;
 using shading::Texture2D;
 
@@ -39,6 +42,19 @@ void expect_lanes_match(const Texture2D& tex, const std::vector<glm::vec3>& pts,
       ASSERT_EQ(std::bit_cast<uint32_t>(kernel(p)), std::bit_cast<uint32_t>(scalar));
     }
   }
+  for (size_t k = 0; k + 16 <= pts.size(); k += 16) {
+    alignas(64) float s[16], t[16], r[16], out[16];
+    for (int l = 0; l < 16; ++l) s[l] = pts[k + l].x, t[l] = pts[k + l].y, r[l] = pts[k + l].z;
+    kernel(VecF32x16::load_rows(s, s + 8), VecF32x16::load_rows(t, t + 8), VecF32x16::load_rows(r, r + 8))
+        .store_rows(out, out + 8);
+    for (int l = 0; l < 16; ++l) {
+      const glm::vec3 p = pts[k + l];
+      const float scalar = shading::detail::pcf_lequal_scalar<F, kBorderWrap>(tex.level(0), p, kBorder);
+      ASSERT_EQ(std::bit_cast<uint32_t>(out[l]), std::bit_cast<uint32_t>(scalar))
+          << what << " sixteen lanes, lane " << l << ", " << tex.width() << "x" << tex.height()
+          << (kBorderWrap ? " border" : " edge") << " at (" << p.x << ", " << p.y << ", " << p.z << ")";
+    }
+  }
 }
 
 // Coordinates for a w×h texture: random ones over and around it, and for every texel boundary and centre on
@@ -58,9 +74,10 @@ std::vector<glm::vec3> coordinates(int w, int h, std::mt19937& rng) {
                       glm::vec3(0.3f, 0.7f, -0.5f), glm::vec3(-1e-7f, 1.0f + 1e-7f, 0.5f)})
     pts.push_back(q);
   std::shuffle(pts.begin(), pts.end(), rng);  // mix edge lanes with inside lanes in one call
-  while (pts.size() % 8) pts.emplace_back(0.5f, 0.5f, 0.5f);
-  // Whole groups inside the map (the kernel's short path), and groups of seven inside lanes with one lane just
-  // past an edge, far away or NaN, in every lane position: the short path's test must send those to the full one.
+  while (pts.size() % 16) pts.emplace_back(0.5f, 0.5f, 0.5f);
+  // Whole groups inside the map (the kernels' short paths), and groups of fifteen inside lanes with one lane just
+  // past an edge, far away or NaN, in every lane position (so each half of eight is, in turn, all inside and one
+  // lane out): the short paths' tests must send those to the full ones.
   auto inside = [](int n) {  // s with 0 < s · n − 0.5 < n − 1: footprints inside (none when n < 2)
     const float lo = 0.51f / float(n);
     return std::uniform_real_distribution<float>(lo, std::max(lo, (float(n) - 0.51f) / float(n)));
@@ -73,8 +90,8 @@ std::vector<glm::vec3> coordinates(int w, int h, std::mt19937& rng) {
                                {3e9f, 0.5f},                        {0.5f, -3e9f},
                                {nan, 0.5f},                         {0.5f, inf}};
   for (glm::vec2 o : outside)
-    for (int lane = 0; lane < 8; ++lane)
-      for (int l = 0; l < 8; ++l)
+    for (int lane = 0; lane < 16; ++lane)
+      for (int l = 0; l < 16; ++l)
         pts.push_back(l == lane ? glm::vec3(o, ref(rng)) : glm::vec3(inside_s(rng), inside_t(rng), ref(rng)));
   return pts;
 }
@@ -86,7 +103,7 @@ void check_format(const Texture2D& tex, std::mt19937& rng, const char* what) {
   expect_lanes_match<F, true>(tex, pts, what);
 }
 
-TEST(PcfSimd, EightLanesEqualTheScalarKernelOnTargetViews) {
+TEST(PcfSimd, EightAndSixteenLanesEqualTheScalarKernelOnTargetViews) {
   std::mt19937 rng(777);
   std::uniform_real_distribution<float> depth(0.0f, 1.0f);
   for (auto [w, h] : {std::pair{37, 23}, {64, 64}, {1, 9}, {9, 1}, {1, 1}, {2, 2}, {65, 3}}) {
@@ -111,7 +128,7 @@ TEST(PcfSimd, EightLanesEqualTheScalarKernelOnTargetViews) {
 
 // Tightly packed storage: the last texel of the last row is the last float of the allocation, so a kernel that
 // read one texel too far would be caught by sanitizers and by the comparison.
-TEST(PcfSimd, EightLanesEqualTheScalarKernelOnPackedTextures) {
+TEST(PcfSimd, EightAndSixteenLanesEqualTheScalarKernelOnPackedTextures) {
   std::mt19937 rng(4242);
   std::uniform_real_distribution<float> depth(0.0f, 1.0f);
   for (auto [w, h] : {std::pair{16, 16}, {5, 7}, {2, 1}, {1, 2}}) {

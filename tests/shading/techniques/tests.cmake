@@ -30,4 +30,6 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/irregular_lists_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/irregular_test.cpp
 )
-list(APPEND SHADOWLAB_TEST_LIBS shadowlab::techniques shadowlab::frame)
+# irregular_test.cpp scores frames against the ray-cast reference (scenes/reference), so a build of this module
+# alone links that library too.
+list(APPEND SHADOWLAB_TEST_LIBS shadowlab::techniques shadowlab::frame shadowlab::reference)
