@@ -57,6 +57,8 @@ template <class K>
 VecF32x16 tap2(const K& k, const SampleLanes& b, glm::vec2 off0, glm::vec2 off1) {
   return tap2(k, b, VecF32::splat(off0.x), VecF32::splat(off0.y), VecF32::splat(off1.x), VecF32::splat(off1.y));
 }
+// A sum of taps, the two of a tap2 added in tap order: (sum + row 0) + row 1.
+inline VecF32 add_taps(VecF32 sum, VecF32x16 two) { return sum + two.row0() + two.row1(); }
 
 template <PoissonMode kMode, class K>
 VecF32 poisson(const K& k, const SampleLanes& b, const FilterParams& p, int n) {
@@ -94,11 +96,7 @@ VecF32 poisson(const K& k, const SampleLanes& b, const FilterParams& p, int n) {
     return raster::simd::max(visibility, VecF32::splat(0.0f));
   }
   VecF32 sum = VecF32::splat(0.0f);
-  for (int i = 0; i < n; i += 2) {
-    const VecF32x16 r = taps_i(i);
-    sum = sum + r.row0();
-    sum = sum + r.row1();
-  }
+  for (int i = 0; i < n; i += 2) sum = add_taps(sum, taps_i(i));
   return raster::simd::div(sum, VecF32::splat(float(n)));
 }
 }  // namespace lanes_detail
@@ -111,16 +109,13 @@ raster::simd::VecF32 filter_lanes(const K& k, const SampleLanes& b, const Filter
   if constexpr (std::is_same_v<Filter, HardFilter> || std::is_same_v<Filter, PcfFilter>) {
     return tap(k, b, glm::vec2(0.0f));
   } else if constexpr (std::is_same_v<Filter, EarlyBailFilter>) {
+    using lanes_detail::add_taps;
     using lanes_detail::tap2;
-    using raster::simd::VecF32x16;
     static_assert(kOuterTaps.size() % 2 == 0 && kPoissonDisk.size() % 2 == 0);
     VecF32 outer = VecF32::splat(0.0f);
-    for (size_t i = 0; i < kOuterTaps.size(); i += 2) {
-      const VecF32x16 r = tap2(k, b, kPoissonDisk[size_t(kOuterTaps[i])] * p.spread,
-                               kPoissonDisk[size_t(kOuterTaps[i + 1])] * p.spread);
-      outer = outer + r.row0();
-      outer = outer + r.row1();
-    }
+    for (size_t i = 0; i < kOuterTaps.size(); i += 2)
+      outer = add_taps(outer, tap2(k, b, kPoissonDisk[size_t(kOuterTaps[i])] * p.spread,
+                                   kPoissonDisk[size_t(kOuterTaps[i + 1])] * p.spread));
     alignas(32) float o[8];
     outer.store(o);
     bool full = false;  // some lane whose outer taps disagree
@@ -128,11 +123,8 @@ raster::simd::VecF32 filter_lanes(const K& k, const SampleLanes& b, const Filter
     const VecF32 bail = outer * VecF32::splat(0.25f);
     if (!full) return bail;
     VecF32 sum = VecF32::splat(0.0f);
-    for (size_t i = 0; i < kPoissonDisk.size(); i += 2) {
-      const VecF32x16 r = tap2(k, b, kPoissonDisk[i] * p.spread, kPoissonDisk[i + 1] * p.spread);
-      sum = sum + r.row0();
-      sum = sum + r.row1();
-    }
+    for (size_t i = 0; i < kPoissonDisk.size(); i += 2)
+      sum = add_taps(sum, tap2(k, b, kPoissonDisk[i] * p.spread, kPoissonDisk[i + 1] * p.spread));
     const VecF32 all = raster::simd::div(sum, VecF32::splat(16.0f));
     alignas(32) float r[8], a[8];
     bail.store(r), all.store(a);
