@@ -66,18 +66,23 @@ struct PcfPassShader {
     } else if constexpr (kTaps == 1) {
       lit = kernel(px, py, ref);
     } else {
-      // Two taps per sixteen-lane lookup (one AVX-512 register where the build has it), summed in tap order.
-      using raster::simd::VecF32x16;
-      static_assert(kTaps % 2 == 0);
       lit = VecF32::splat(0.0f);
       const Kernel k = kernel;  // a local copy: its constants stay in registers across the taps
-      const VecF32x16 ref2 = VecF32x16::rows(ref, ref);
-      for (int i = 0; i < kTaps; i += 2) {
-        const VecF32x16 r = k(VecF32x16::rows(px + VecF32::splat(offset[i].x), px + VecF32::splat(offset[i + 1].x)),
-                              VecF32x16::rows(py + VecF32::splat(offset[i].y), py + VecF32::splat(offset[i + 1].y)),
-                              ref2);
-        lit = lit + r.row0();
-        lit = lit + r.row1();
+      if constexpr (shading::detail::kTapsPerLookup == 2) {
+        // Two taps per sixteen-lane lookup (one AVX-512 register), summed in tap order.
+        using raster::simd::VecF32x16;
+        static_assert(kTaps % 2 == 0);
+        const VecF32x16 ref2 = VecF32x16::rows(ref, ref);
+        for (int i = 0; i < kTaps; i += 2) {
+          const VecF32x16 r = k(VecF32x16::rows(px + VecF32::splat(offset[i].x), px + VecF32::splat(offset[i + 1].x)),
+                                VecF32x16::rows(py + VecF32::splat(offset[i].y), py + VecF32::splat(offset[i + 1].y)),
+                                ref2);
+          lit = lit + r.row0();
+          lit = lit + r.row1();
+        }
+      } else {
+        for (int i = 0; i < kTaps; ++i)
+          lit = lit + k(px + VecF32::splat(offset[i].x), py + VecF32::splat(offset[i].y), ref);
       }
       lit = lit * VecF32::splat(1.0f / kTaps);
     }

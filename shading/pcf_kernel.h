@@ -533,6 +533,16 @@ inline raster::simd::VecF32x16 pcf_lequal_x16(const Pcf16Level& L, raster::simd:
 #endif
 }
 
+// How many taps of a fragment pair's eight points a multi-tap filter looks up at once (shadow_filters_x8.h, and
+// the PCF bench's Poisson shader): two, as one sixteen-lane lookup, with AVX-512; one elsewhere, where a pair is
+// two eight-lane lookups anyway and measured slower (the Poisson pass at 2 threads 19.1 → 21.2 ms with AVX2 on the
+// Zen 5 EPYC: the larger loop body no longer inlines into the fragment stage). Either way gives the same bits.
+#if defined(SHADOWLAB_SIMD_AVX512)
+inline constexpr int kTapsPerLookup = 2;
+#else
+inline constexpr int kTapsPerLookup = 1;
+#endif
+
 // The common shadow case: compare LEQUAL, LINEAR without mips (so λ cannot matter), clamp_to_edge or
 // clamp_to_border on both axes, a d16, d24 or d32f texture.
 inline bool pcf_fast_path_applies(const Texture2D& t, const Sampler& s) {

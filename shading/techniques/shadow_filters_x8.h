@@ -1,8 +1,8 @@
 // The filters of shadow_filters.h over up to eight points at once (a fragment_pair's live lanes): a filter of one
 // tap is one eight-lane lookup through a kernel of ShadowLookup2D::visit (PcfKernel or GenericShadowKernel), a
-// filter of several takes its taps two at a time as one sixteen-lane lookup (one AVX-512 register where the build
-// has it); the taps are summed per lane in the scalar filter's order with the same float operations, so lane l
-// equals the scalar filter on point l bit for bit. Per-lane tap offsets (stratified, rotated) are computed per
+// filter of several takes its taps two at a time as one sixteen-lane lookup in AVX-512 builds, one at a time
+// elsewhere (for_each_tap); the taps are summed per lane in the scalar filter's order with the same float
+// operations, so lane l equals the scalar filter on point l bit for bit. Per-lane tap offsets (stratified, rotated) are computed per
 // lane by the scalar code.
 #pragma once
 #include <array>
@@ -48,17 +48,34 @@ template <class K>
 VecF32 tap(const K& k, const SampleLanes& b, glm::vec2 off) {
   return tap(k, b, VecF32::splat(off.x), VecF32::splat(off.y));
 }
-// Two taps per lane in one sixteen-lane lookup: row 0 at offset (ox0, oy0), row 1 at (ox1, oy1).
-template <class K>
-VecF32x16 tap2(const K& k, const SampleLanes& b, VecF32 ox0, VecF32 oy0, VecF32 ox1, VecF32 oy1) {
-  return k(VecF32x16::rows(b.s + ox0, b.s + ox1), VecF32x16::rows(b.t + oy0, b.t + oy1), VecF32x16::rows(b.ref, b.ref));
+// Looks up taps 0 .. n − 1 (n even) on every lane, tap i at the lane offsets off(i, ox, oy), and hands each tap's
+// result to add(VecF32) in tap order: two taps per sixteen-lane lookup, or one per eight-lane lookup
+// (detail::kTapsPerLookup says which pays on this instruction set).
+template <class K, class Off, class Add>
+void for_each_tap(const K& k, const SampleLanes& b, int n, Off&& off, Add&& add) {
+  if constexpr (shading::detail::kTapsPerLookup == 2) {
+    for (int i = 0; i < n; i += 2) {
+      VecF32 ox0, oy0, ox1, oy1;
+      off(i, ox0, oy0), off(i + 1, ox1, oy1);
+      const VecF32x16 r =
+          k(VecF32x16::rows(b.s + ox0, b.s + ox1), VecF32x16::rows(b.t + oy0, b.t + oy1), VecF32x16::rows(b.ref, b.ref));
+      add(r.row0()), add(r.row1());
+    }
+  } else {
+    for (int i = 0; i < n; ++i) {
+      VecF32 ox, oy;
+      off(i, ox, oy);
+      add(tap(k, b, ox, oy));
+    }
+  }
 }
-template <class K>
-VecF32x16 tap2(const K& k, const SampleLanes& b, glm::vec2 off0, glm::vec2 off1) {
-  return tap2(k, b, VecF32::splat(off0.x), VecF32::splat(off0.y), VecF32::splat(off1.x), VecF32::splat(off1.y));
+// Offsets for for_each_tap: tap i at d(i) · spread on every lane.
+inline auto splat_offsets(auto&& d, float spread) {
+  return [d, spread](int i, VecF32& ox, VecF32& oy) {
+    const glm::vec2 off = d(i) * spread;
+    ox = VecF32::splat(off.x), oy = VecF32::splat(off.y);
+  };
 }
-// A sum of taps, the two of a tap2 added in tap order: (sum + row 0) + row 1.
-inline VecF32 add_taps(VecF32 sum, VecF32x16 two) { return sum + two.row0() + two.row1(); }
 
 template <PoissonMode kMode, class K>
 VecF32 poisson(const K& k, const SampleLanes& b, const FilterParams& p, int n) {
@@ -79,24 +96,14 @@ VecF32 poisson(const K& k, const SampleLanes& b, const FilterParams& p, int n) {
       ox = VecF32::load(x), oy = VecF32::load(y);
     }
   };
-  // Taps i and i + 1 on every lane (n is even).
-  const auto taps_i = [&](int i) {
-    VecF32 ox0, oy0, ox1, oy1;
-    offsets(i, ox0, oy0), offsets(i + 1, ox1, oy1);
-    return tap2(k, b, ox0, oy0, ox1, oy1);
-  };
   if (p.tutorial) {  // tutorial_step and tutorial_visibility per lane
     const VecF32 one = VecF32::splat(1.0f), weight = VecF32::splat(kTutorialTapWeight);
     VecF32 visibility = one;
-    for (int i = 0; i < n; i += 2) {
-      const VecF32x16 r = taps_i(i);
-      visibility = visibility - weight * (one - r.row0());
-      visibility = visibility - weight * (one - r.row1());
-    }
+    for_each_tap(k, b, n, offsets, [&](VecF32 v) { visibility = visibility - weight * (one - v); });
     return raster::simd::max(visibility, VecF32::splat(0.0f));
   }
   VecF32 sum = VecF32::splat(0.0f);
-  for (int i = 0; i < n; i += 2) sum = add_taps(sum, taps_i(i));
+  for_each_tap(k, b, n, offsets, [&](VecF32 v) { sum = sum + v; });
   return raster::simd::div(sum, VecF32::splat(float(n)));
 }
 }  // namespace lanes_detail
@@ -109,13 +116,13 @@ raster::simd::VecF32 filter_lanes(const K& k, const SampleLanes& b, const Filter
   if constexpr (std::is_same_v<Filter, HardFilter> || std::is_same_v<Filter, PcfFilter>) {
     return tap(k, b, glm::vec2(0.0f));
   } else if constexpr (std::is_same_v<Filter, EarlyBailFilter>) {
-    using lanes_detail::add_taps;
-    using lanes_detail::tap2;
+    using lanes_detail::for_each_tap;
+    using lanes_detail::splat_offsets;
     static_assert(kOuterTaps.size() % 2 == 0 && kPoissonDisk.size() % 2 == 0);
     VecF32 outer = VecF32::splat(0.0f);
-    for (size_t i = 0; i < kOuterTaps.size(); i += 2)
-      outer = add_taps(outer, tap2(k, b, kPoissonDisk[size_t(kOuterTaps[i])] * p.spread,
-                                   kPoissonDisk[size_t(kOuterTaps[i + 1])] * p.spread));
+    for_each_tap(k, b, int(kOuterTaps.size()),
+                 splat_offsets([](int i) { return kPoissonDisk[size_t(kOuterTaps[size_t(i)])]; }, p.spread),
+                 [&](VecF32 v) { outer = outer + v; });
     alignas(32) float o[8];
     outer.store(o);
     bool full = false;  // some lane whose outer taps disagree
@@ -123,8 +130,8 @@ raster::simd::VecF32 filter_lanes(const K& k, const SampleLanes& b, const Filter
     const VecF32 bail = outer * VecF32::splat(0.25f);
     if (!full) return bail;
     VecF32 sum = VecF32::splat(0.0f);
-    for (size_t i = 0; i < kPoissonDisk.size(); i += 2)
-      sum = add_taps(sum, tap2(k, b, kPoissonDisk[i] * p.spread, kPoissonDisk[i + 1] * p.spread));
+    for_each_tap(k, b, int(kPoissonDisk.size()), splat_offsets([](int i) { return kPoissonDisk[size_t(i)]; }, p.spread),
+                 [&](VecF32 v) { sum = sum + v; });
     const VecF32 all = raster::simd::div(sum, VecF32::splat(16.0f));
     alignas(32) float r[8], a[8];
     bail.store(r), all.store(a);
