@@ -26,26 +26,28 @@ struct TileGrid {
 
 template <class Record>
 struct ChunkBins {
-  std::vector<Record> setups;   // in submission order, as set up
   std::vector<Record> binned;   // copies grouped by tile
   std::vector<uint32_t> offsets;       // tile k's commands: binned[offsets[k] .. offsets[k + 1])
 
-  // Starts a draw: no setups, every tile's count at zero.
-  void reset(const TileGrid& grid) {
-    setups.clear();
+  // Starts a draw: no setups, every tile's count at zero. `staging` receives the set-up records, in submission
+  // order, until bin() has sorted them into `binned`: it is the memory of the worker setting the chunk up
+  // (renderer.h), reused from chunk to chunk, and must outlive the call to bin().
+  void reset(const TileGrid& grid, std::vector<Record>& staging) {
+    setups_ = &staging;
+    staging.clear();
     offsets.assign(size_t(grid.count()) + 1, 0u);
   }
 
   // Appends a set-up triangle and counts it in every tile its box touches.
   // Most triangles of a detailed mesh lie in one tile: those are counted without the loops of for_each_tile.
   [[gnu::always_inline]] void add(const Record& t, const TileGrid& grid) {
-    setups.push_back(t);
+    setups_->push_back(t);
     const int k = single_tile(t, grid);
     if (k >= 0) ++offsets[size_t(k) + 1];
     else for_each_tile(t, grid, [&](int j) { ++offsets[size_t(j) + 1]; });
   }
 
-  // Sorts `setups` into per-tile slices (counting sort: the counts were taken by add(), then a prefix sum and
+  // Sorts the staged records into per-tile slices (counting sort: the counts were taken by add(), then a prefix sum and
   // one scatter pass). With `stream` (a draw whose records will have left the caches before the tiles read
   // them), one-cache-line records are written with non-temporal stores: the scatter over every tile's slice then
   // costs no read of each destination line first (renderer.h measures it).
@@ -56,7 +58,7 @@ struct ChunkBins {
     cursor.assign(offsets.begin(), offsets.end() - 1);
     // Every record to each tile it touches, put(at, record) writing it at binned[at].
     auto scatter = [&](auto&& put) {
-      for (const Record& t : setups) {
+      for (const Record& t : *setups_) {
         const int k = single_tile(t, grid);
         if (k >= 0) put(cursor[size_t(k)]++, t);
         else for_each_tile(t, grid, [&](int j) { put(cursor[size_t(j)]++, t); });
@@ -66,10 +68,12 @@ struct ChunkBins {
       if (stream) {
         scatter([&](size_t at, const Record& t) { simd::stream_line(&binned[at], &t); });
         simd::stream_fence();
+        setups_ = nullptr;
         return;
       }
     }
     scatter([&](size_t at, const Record& t) { binned[at] = t; });
+    setups_ = nullptr;
   }
 
   // The tile holding the triangle's whole box, or -1 when the box spans several.
@@ -88,6 +92,7 @@ struct ChunkBins {
   }
 
  private:
+  std::vector<Record>* setups_ = nullptr;  // the staging array between reset() and bin()
   std::vector<uint32_t> scratch_;
 };
 

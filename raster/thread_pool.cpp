@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include <tbb/blocked_range.h>
@@ -35,15 +37,24 @@ ThreadPool::ThreadPool(int threads) : threads_(threads < 0 ? hardware_threads() 
 ThreadPool::~ThreadPool() = default;
 
 void ThreadPool::parallel_for(size_t n, const std::function<void(size_t)>& fn) {
+  parallel_for_workers(n, [&](size_t i, int) { fn(i); });
+}
+
+void ThreadPool::parallel_for_workers(size_t n, const std::function<void(size_t, int)>& fn) {
   if (n == 0) return;
   if (!impl_ || n == 1) {
-    for (size_t i = 0; i < n; ++i) fn(i);
+    for (size_t i = 0; i < n; ++i) fn(i, 0);
     return;
   }
   impl_->arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1),
                       [&](const tbb::blocked_range<size_t>& r) {
-                        for (size_t i = r.begin(); i != r.end(); ++i) fn(i);
+                        // The thread's slot in this arena, below the arena's concurrency (threads_).
+                        const int w = tbb::this_task_arena::current_thread_index();
+                        if (w < 0 || w >= threads_)
+                          throw std::logic_error("ThreadPool: worker slot " + std::to_string(w) + " outside [0, " +
+                                                 std::to_string(threads_) + ")");
+                        for (size_t i = r.begin(); i != r.end(); ++i) fn(i, w);
                       },
                       tbb::simple_partitioner());
   });

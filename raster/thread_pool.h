@@ -25,6 +25,14 @@ class ThreadPool {
   // workers dynamically; exceptions thrown by fn are rethrown here.
   void parallel_for(size_t n, const std::function<void(size_t)>& fn);
 
+  // How many workers run a parallel_for's indices (the calling thread included; 1 when inline).
+  int workers() const { return threads_ > 0 ? threads_ : 1; }
+  // As parallel_for, and fn(i, w) also gets the worker running index i, w in [0, workers()): no two calls with
+  // the same w overlap, so memory kept per worker and indexed by w needs no lock, and stays in that worker's
+  // caches from one index to the next. fn must not start parallel work of its own (a waiting worker could take
+  // another index meanwhile).
+  void parallel_for_workers(size_t n, const std::function<void(size_t, int)>& fn);
+
  private:
   struct Impl;
   int threads_;

@@ -6,6 +6,7 @@
 
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "bench/triangle_soup.h"
 #include "tests/raster/raster_test_util.h"
@@ -44,11 +45,12 @@ TEST(Bins, StreamedScatterWritesTheRecordsOfThePlainCopy) {
   const TileGrid grid{10, 7};
   const auto records = random_records(5000, 3);
   ChunkBins<DepthSetup> plain, streamed;
-  for (ChunkBins<DepthSetup>* b : {&plain, &streamed}) {
-    b->reset(grid);
-    for (const DepthSetup& d : records) b->add(d, grid);
-  }
+  std::vector<DepthSetup> staging;  // one worker's, set up and binned one chunk after the other
+  plain.reset(grid, staging);
+  for (const DepthSetup& d : records) plain.add(d, grid);
   plain.bin(grid, false);
+  streamed.reset(grid, staging);
+  for (const DepthSetup& d : records) streamed.add(d, grid);
   streamed.bin(grid, true);
   ASSERT_EQ(plain.offsets, streamed.offsets);
   ASSERT_EQ(plain.binned.size(), streamed.binned.size());

@@ -15,6 +15,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/hiz_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/srgb8_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/isa_namespace_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/thread_pool_test.cpp
 )
 list(APPEND SHADOWLAB_TEST_LIBS shadowlab::raster)
 # Conformance against Mesa llvmpipe needs the GL reference (raster/reference/).
