@@ -47,8 +47,8 @@ struct ChunkBins {
     else for_each_tile(t, grid, [&](int j) { ++offsets[size_t(j) + 1]; });
   }
 
-  // Sorts the staged records into per-tile slices (counting sort: the counts were taken by add(), then a prefix sum and
-  // one scatter pass). With `stream` (a draw whose records will have left the caches before the tiles read
+  // Sorts the staged records into per-tile slices (counting sort: the counts were taken by add(), then a prefix
+  // sum and one scatter pass). With `stream` (a draw whose records will have left the caches before the tiles read
   // them), one-cache-line records are written with non-temporal stores: the scatter over every tile's slice then
   // costs no read of each destination line first (renderer.h measures it).
   void bin(const TileGrid& grid, bool stream = false) {
@@ -57,8 +57,10 @@ struct ChunkBins {
     std::vector<uint32_t>& cursor = scratch_;
     cursor.assign(offsets.begin(), offsets.end() - 1);
     // Every record to each tile it touches, put(at, record) writing it at binned[at].
+    const std::vector<Record>& staged = *setups_;
+    setups_ = nullptr;  // the staging array is the worker's again once this returns
     auto scatter = [&](auto&& put) {
-      for (const Record& t : *setups_) {
+      for (const Record& t : staged) {
         const int k = single_tile(t, grid);
         if (k >= 0) put(cursor[size_t(k)]++, t);
         else for_each_tile(t, grid, [&](int j) { put(cursor[size_t(j)]++, t); });
@@ -68,12 +70,10 @@ struct ChunkBins {
       if (stream) {
         scatter([&](size_t at, const Record& t) { simd::stream_line(&binned[at], &t); });
         simd::stream_fence();
-        setups_ = nullptr;
         return;
       }
     }
     scatter([&](size_t at, const Record& t) { binned[at] = t; });
-    setups_ = nullptr;
   }
 
   // The tile holding the triangle's whole box, or -1 when the box spans several.

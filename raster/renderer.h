@@ -97,8 +97,8 @@ class Renderer {
   // and reused from one chunk to the next: the set-up records until they are binned, and a depth-only chunk's
   // outcodes and window vertices of its vertex range. Per chunk, a draw of 10^6 small triangles spread these
   // over ~150 MB of pages touched once each; per worker they are a few hot megabytes. Measured on the 2-core
-  // AMD EPYC (Zen 5) at 2 threads beside llvmpipe (2026-11-29, four runs each, alternating): the front end of
-  // 10^6 triangles of ~10 px took 16–50 ms before and 15–20 ms after (README).
+  // AMD EPYC (Zen 5), AVX-512 path, at 2 threads beside llvmpipe (2026-11-29, seven runs each, alternating): the
+  // front end of 10^6 triangles of ~10 px took 16–50 ms before and 15–24 ms after (README).
   struct WorkerScratch {
     std::vector<TriangleSetup> setups;
     std::vector<DepthSetup> depth_setups;
@@ -153,6 +153,10 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   auto bins_of = [](auto& ch) -> auto& {
     if constexpr (kShaded) return ch.bins;
     else return ch.depth_bins;
+  };
+  auto staging_of = [](WorkerScratch& ws) -> std::vector<Record>& {  // the worker's array for records before binning
+    if constexpr (kShaded) return ws.setups;
+    else return ws.depth_setups;
   };
 
   using Clock = std::chrono::steady_clock;
@@ -253,10 +257,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
                    bool in_range) {
     Chunk& ch = *chunks_[c];
     ChunkBins<Record>& bins = bins_of(ch);
-    std::vector<Record>& staging = [&]() -> std::vector<Record>& {
-      if constexpr (kShaded) return ws.setups;
-      else return ws.depth_setups;
-    }();
+    std::vector<Record>& staging = staging_of(ws);
     bins.reset(grid, staging);
     ch.full_count = 0;
     ch.interp_count = 0;
@@ -414,7 +415,8 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   if (pending) {
     shade_all_vertices();
     pool_.parallel_for_workers(nchunks, [&](size_t c, int w) {
-      if (chunks_[c]->pending) timed(front_busy_ns, [&] { front(c, *workers_[size_t(w)], all_codes, all_win, 0, false); });
+      if (!chunks_[c]->pending) return;
+      timed(front_busy_ns, [&] { front(c, *workers_[size_t(w)], all_codes, all_win, 0, false); });
     });
   }
 
