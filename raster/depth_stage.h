@@ -48,7 +48,8 @@ inline constexpr bool kHiZCompare<FixedDepthFunc<DepthFunc::lequal>> = true;
 // one elsewhere, where the same sixteen lanes as two halves were measured slower (27 % more instructions per
 // draw of small triangles with AVX2: the doubled row state no longer fits the sixteen ymm registers). Both forms
 // give the same bits: tests/raster/depth_stage_test.cpp compares them on every machine (with the two-halves
-// sixteen lanes there, and with the zmm ones where the tests are built for AVX-512).
+// sixteen lanes there, and with the zmm ones where the tests are built for AVX-512). Narrow triangles take one
+// row a step in every build (one_row below, rasterize_narrow in coverage.h).
 #if defined(SHADOWLAB_SIMD_AVX512)
 inline constexpr int kDepthRows = 2;
 #else
@@ -71,6 +72,12 @@ struct DepthOnlyStage {
 
   DepthOnlyStage(DepthTarget* d, TileHiZ* h, Compare c)
       : depth(d), hiz(h), base(d->row<Storage>(0)), pitch(size_t(d->pitch())), compare(c) {}
+  DepthOnlyStage(DepthTarget* d, TileHiZ* h, Storage* b, size_t p, Compare c)
+      : depth(d), hiz(h), base(b), pitch(p), compare(c) {}
+
+  // The same stage one row at a time, for narrow triangles (rasterize, coverage.h): most are a few pixels
+  // high, and eight lanes a step waste less on them than sixteen (kDepthRows).
+  DepthOnlyStage<Format, Compare, Write, 1> one_row() const { return {depth, hiz, base, pitch, compare}; }
 
   DepthTarget* depth;
   TileHiZ* hiz = nullptr;  // the tile's bounds, when kHiZ
@@ -138,7 +145,8 @@ struct DepthOnlyStage {
   }
 
   // The pixels at the cursor (eight of its row, and eight of the next when Rows is 2) for the lanes set in
-  // `covered`. Every row is read and written back whole, so every row must lie in the worker's tile.
+  // `covered`, which may be none. Every row is read and written back whole, so every row must lie in the worker's
+  // tile.
   [[gnu::always_inline]] void rows(const Columns& c, const Cursor& at, Mask covered, BlockMax& bm) const {
     Storage* p = at.p;
     const auto frag = Traits::from_depth(plane_depth_clamped(c.zcol, c.dzdy, c.z_offset, at.y));
