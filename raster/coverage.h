@@ -66,7 +66,7 @@ struct EdgeRows {
 
 // The same for two rows at a time, sixteen lanes: lanes 0–7 hold the upper row, 8–15 the row below, and each
 // step moves down two rows. Values wrap modulo 2^32 like the eight-lane form's, and the rows a stage reads lie
-// where limits.h bounds them (inside a crossed block).
+// where limits.h bounds them (inside a crossed block; an edge that does not cross the block is all zeros).
 struct EdgeRowPairs {
   simd::VecI32x16 f[3], step[3];
 
@@ -115,7 +115,8 @@ inline bool is_narrow(const TriangleSetup& t) { return t.flags & kNarrowEdges; }
 // outside the edge when g < 0 and the edge crosses it when g < its range over the block); visit(bx, by, row_lo,
 // row_hi, block) is called for every block not outside an edge and not skipped, `block` saying which edges cross
 // it and giving their exact values at its first row. skip(by) gives the blocks of a block row to leave out, bit i
-// for the block at the tile's i-th block column. A block row's blocks are found as one bit mask first (the edge
+// for the block at the tile's i-th block column. The rectangle must lie inside one tile (at most eight block
+// columns: the bit masks below hold one). A block row's blocks are found as one bit mask first (the edge
 // test for each block without a branch), then visited in order, one per set bit: where the test was a branch per
 // block, its outcome changed along every row that crosses an edge and was mispredicted there (see
 // rasterize_blocks for what that cost).
@@ -244,7 +245,8 @@ inline void rasterize_block_masks(const TriangleSetup& t, int32_t x0, int32_t y0
 // took 20.1–21.1 → 11.8–11.9 ms on the AVX2 path, and of 10^6 triangles of ~10 px 16.6–19.5 → 11.8–12.3 ms. On the
 // AVX-512 path, where row stages take two rows a step, narrow triangles take one (DepthOnlyStage::one_row): with
 // two, those back ends took 14.4–15.2 and 15.3–17.3 ms, with one 12.5–12.7 and 13.2–13.4 ms. Tried and dropped: a
-// fixed count of rows per segment (no branch on the box's height either), the dragon's back end 15.5 → 18.3 ms.
+// fixed count of rows per segment (no branch on the box's height either), measured on the AVX-512 path while
+// narrow triangles still took two rows a step: the dragon's back end 15.5 → 18.3 ms.
 template <class Tri, class Stage>
 inline void rasterize_narrow(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const Stage& stage) {
   static_assert(Stage::kRows == 1, "narrow triangles take one row a step (the stage's one_row())");

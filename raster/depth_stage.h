@@ -1,6 +1,7 @@
-// The lean back end of a depth-only draw: for each covered 8-pixel row of a block (or pair of rows, sixteen
-// lanes, where the CPU has 512-bit vectors: kDepthRows), the interpolated depth, clamp, conversion to the format,
-// depth test and masked write. No varyings, no colour, no quads.
+// The lean back end of a depth-only draw: for each 8-pixel row of a visited block or a narrow triangle's segment
+// (or pair of rows, sixteen lanes, where the CPU has 512-bit vectors: kDepthRows), covered or not, the
+// interpolated depth, clamp, conversion to the format, depth test and masked write. No varyings, no colour, no
+// quads.
 #pragma once
 #include <cstdint>
 #include <type_traits>

@@ -21,8 +21,8 @@ class TileHiZ {
   static constexpr int kBlocks = kTileSize / kBlockSize;  // per side
 
   // Reads the farthest depth of every block of the tile at (x0, y0) (pixels, tile-aligned) from a d32f target.
-  // Rows past the target's height are padding at the clear value or written by nobody: reading them only makes
-  // the bound more conservative.
+  // Rows past the target's height are padding at the clear value or changed by nobody (the depth-only stage
+  // writes back what it read there): reading them only makes the bound more conservative.
   void load(const DepthTarget& d, int32_t x0, int32_t y0) {
     x0_ = x0, y0_ = y0;
     for (int j = 0; j < kBlocks; ++j)
