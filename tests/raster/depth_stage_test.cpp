@@ -5,8 +5,8 @@
 // form goes through rasterize(), which sends narrow triangles down the narrow path (rasterize_narrow, one row a
 // step in every build); the two-row form walks every triangle's blocks (rasterize_blocks), narrow ones too, so
 // the narrow path is held to the block walk as well. And the hierarchical bounds each form keeps over the draw
-// stay at or above every block's content. Here the sixteen lanes are two halves unless the build is the AVX-512 one; the
-// instruction-set test (tests/cli/isa_dispatch_test.cpp) compares the 512-bit form where the CPU has it.
+// stay at or above every block's content. Here the sixteen lanes are two halves unless the build is the AVX-512
+// one; the instruction-set test (tests/cli/isa_dispatch_test.cpp) compares the 512-bit form where the CPU has it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
