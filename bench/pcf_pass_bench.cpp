@@ -69,16 +69,21 @@ struct PcfPassShader {
       lit = VecF32::splat(0.0f);
       const Kernel k = kernel;  // a local copy: its constants stay in registers across the taps
       if constexpr (shading::detail::kTapsPerLookup == 2) {
-        // Two taps per sixteen-lane lookup (one AVX-512 register), summed in tap order.
+        // Two taps per sixteen-lane lookup (one AVX-512 register), kLookupsPerBatch such lookups per call, summed
+        // in tap order (as shading/techniques/shadow_filters_x8.h's for_each_tap does).
         using raster::simd::VecF32x16;
-        static_assert(kTaps % 2 == 0);
-        const VecF32x16 ref2 = VecF32x16::rows(ref, ref);
-        for (int i = 0; i < kTaps; i += 2) {
-          const VecF32x16 r = k(VecF32x16::rows(px + VecF32::splat(offset[i].x), px + VecF32::splat(offset[i + 1].x)),
-                                VecF32x16::rows(py + VecF32::splat(offset[i].y), py + VecF32::splat(offset[i + 1].y)),
-                                ref2);
-          lit = lit + r.row0();
-          lit = lit + r.row1();
+        constexpr int kBatch = shading::detail::kLookupsPerBatch;
+        static_assert(kTaps % (2 * kBatch) == 0);
+        for (int i = 0; i < kTaps; i += 2 * kBatch) {
+          std::array<VecF32x16, kBatch> s, t, r2, r;
+          for (int j = 0; j < kBatch; ++j) {
+            const glm::vec2 o0 = offset[i + 2 * j], o1 = offset[i + 2 * j + 1];
+            s[j] = VecF32x16::rows(px + VecF32::splat(o0.x), px + VecF32::splat(o1.x));
+            t[j] = VecF32x16::rows(py + VecF32::splat(o0.y), py + VecF32::splat(o1.y));
+            r2[j] = VecF32x16::rows(ref, ref);
+          }
+          k(s, t, r2, r);
+          for (const VecF32x16& v : r) lit = lit + v.row0(), lit = lit + v.row1();
         }
       } else {
         for (int i = 0; i < kTaps; ++i)

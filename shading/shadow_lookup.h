@@ -10,6 +10,7 @@
 //   const float lit = shadow.proj(q.in[l].light_clip);  // textureProj(sampler2DShadow, …)
 //   // or, to compile the shader once per path: shadow.visit([&](auto kernel) { draw(MyShader{kernel}); });
 #pragma once
+#include <array>
 #include <span>
 #include <stdexcept>
 
@@ -39,6 +40,14 @@ struct PcfKernel {
                                      raster::simd::VecF32x16 ref) const {
     return detail::pcf_lequal_x16<F, kBorderWrap>(wide, s, t, ref, border_depth);
   }
+  // N sixteen-lane lookups at once (a multi-tap filter's taps, detail::kLookupsPerBatch of them), each equal to
+  // the form above: AVX-512 builds run them side by side (detail::pcf_lequal_gather16_n).
+  template <size_t N>
+  void operator()(const std::array<raster::simd::VecF32x16, N>& s, const std::array<raster::simd::VecF32x16, N>& t,
+                  const std::array<raster::simd::VecF32x16, N>& ref,
+                  std::array<raster::simd::VecF32x16, N>& out) const {
+    detail::pcf_lequal_x16_n<F, kBorderWrap>(wide, s, t, ref, out, border_depth);
+  }
 };
 // ... or the generic lookups for any other sampler.
 struct GenericShadowKernel {
@@ -54,6 +63,12 @@ struct GenericShadowKernel {
   raster::simd::VecF32x16 operator()(raster::simd::VecF32x16 s, raster::simd::VecF32x16 t,
                                      raster::simd::VecF32x16 ref) const {
     return raster::simd::VecF32x16::rows((*this)(s.row0(), t.row0(), ref.row0()), (*this)(s.row1(), t.row1(), ref.row1()));
+  }
+  template <size_t N>
+  void operator()(const std::array<raster::simd::VecF32x16, N>& s, const std::array<raster::simd::VecF32x16, N>& t,
+                  const std::array<raster::simd::VecF32x16, N>& ref,
+                  std::array<raster::simd::VecF32x16, N>& out) const {
+    for (size_t n = 0; n < N; ++n) out[n] = (*this)(s[n], t[n], ref[n]);
   }
 };
 

@@ -1,9 +1,10 @@
 // The filters of shadow_filters.h over up to eight points at once (a fragment_pair's live lanes): a filter of one
 // tap is one eight-lane lookup through a kernel of ShadowLookup2D::visit (PcfKernel or GenericShadowKernel), a
-// filter of several takes its taps two at a time as one sixteen-lane lookup in AVX-512 builds, one at a time
-// elsewhere (for_each_tap); the taps are summed per lane in the scalar filter's order with the same float
-// operations, so lane l equals the scalar filter on point l bit for bit. Per-lane tap offsets (stratified, rotated) are computed per
-// lane by the scalar code.
+// filter of several takes its taps two at a time as one sixteen-lane lookup in AVX-512 builds (eight at a time,
+// as four such lookups run side by side, where the filter has that many), one at a time elsewhere
+// (for_each_tap); the taps are summed per lane in the scalar filter's order with the same float operations, so
+// lane l equals the scalar filter on point l bit for bit. Per-lane tap offsets (stratified, rotated) are
+// computed per lane by the scalar code.
 #pragma once
 #include <array>
 #include <type_traits>
@@ -49,12 +50,28 @@ VecF32 tap(const K& k, const SampleLanes& b, glm::vec2 off) {
   return tap(k, b, VecF32::splat(off.x), VecF32::splat(off.y));
 }
 // Looks up taps 0 .. n − 1 (n even) on every lane, tap i at the lane offsets off(i, ox, oy), and hands each tap's
-// result to add(VecF32) in tap order: two taps per sixteen-lane lookup, or one per eight-lane lookup
+// result to add(VecF32) in tap order: two taps per sixteen-lane lookup, those handed over
+// detail::kLookupsPerBatch at a time while enough taps are left, or one tap per eight-lane lookup
 // (detail::kTapsPerLookup says which pays on this instruction set).
 template <class K, class Off, class Add>
 void for_each_tap(const K& k, const SampleLanes& b, int n, Off&& off, Add&& add) {
   if constexpr (shading::detail::kTapsPerLookup == 2) {
-    for (int i = 0; i < n; i += 2) {
+    constexpr int kBatch = shading::detail::kLookupsPerBatch;
+    int i = 0;
+    if constexpr (kBatch > 1) {
+      for (; i + 2 * kBatch <= n; i += 2 * kBatch) {
+        std::array<VecF32x16, kBatch> s, t, ref, r;
+        for (int j = 0; j < kBatch; ++j) {
+          VecF32 ox0, oy0, ox1, oy1;
+          off(i + 2 * j, ox0, oy0), off(i + 2 * j + 1, ox1, oy1);
+          s[size_t(j)] = VecF32x16::rows(b.s + ox0, b.s + ox1), t[size_t(j)] = VecF32x16::rows(b.t + oy0, b.t + oy1);
+          ref[size_t(j)] = VecF32x16::rows(b.ref, b.ref);
+        }
+        k(s, t, ref, r);
+        for (const VecF32x16& v : r) add(v.row0()), add(v.row1());
+      }
+    }
+    for (; i < n; i += 2) {
       VecF32 ox0, oy0, ox1, oy1;
       off(i, ox0, oy0), off(i + 1, ox1, oy1);
       const VecF32x16 r =

@@ -3,12 +3,17 @@
 // fast-path format and wrap, textures as views of padded targets and as tightly packed storage, sizes down to
 // one texel, coordinates inside, on texel centres, on and beyond every edge and corner, and non-finite; groups
 // wholly inside the map (the kernels' short paths) and groups with a single lane outside it, in every lane
-// position of sixteen. The test binary is built for the first instruction set of SHADOWLAB_ISAS: the sixteen-lane
-// kernel's AVX-512 form is what a build configured with SHADOWLAB_ISAS=avx512 tests, on a CPU that has it.
+// position of sixteen; groups of eight neighbouring footprints (the sixteen-lane window path) up to and one texel
+// past the window's 8 × 4 texels and the map's last column and row; and several sixteen-lane lookups handed over
+// at once (PcfKernel's batch form, pcf_lequal_x16_n), some of them leaving the window path. The test binary is
+// built for the first instruction set of SHADOWLAB_ISAS: the sixteen-lane kernel's AVX-512 form (and the batch's)
+// is what a build configured with SHADOWLAB_ISAS=avx512 tests, on a CPU that has it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
+#include <initializer_list>
 #include <limits>
 #include <random>
 #include <vector>
@@ -25,6 +30,37 @@ using shading::TexelFormat;
 using shading::Texture2D;
 
 constexpr float kBorder = 0.75f;
+
+// N sixteen-lane lookups at once (the batch form), lane by lane against the scalar kernel.
+template <TexelFormat F, bool kBorderWrap, size_t N>
+void expect_batches_match(const shading::PcfKernel<F, kBorderWrap>& kernel, const Texture2D& tex,
+                          const std::vector<glm::vec3>& pts, const char* what) {
+  for (size_t k = 0; k + 16 * N <= pts.size(); k += 16 * N) {
+    std::array<VecF32x16, N> s, t, r, out;
+    for (size_t n = 0; n < N; ++n) {
+      alignas(64) float ps[16], pt[16], pr[16];
+      for (size_t l = 0; l < 16; ++l) {
+        const glm::vec3 p = pts[k + 16 * n + l];
+        ps[l] = p.x, pt[l] = p.y, pr[l] = p.z;
+      }
+      s[n] = VecF32x16::load_rows(ps, ps + 8), t[n] = VecF32x16::load_rows(pt, pt + 8);
+      r[n] = VecF32x16::load_rows(pr, pr + 8);
+    }
+    kernel(s, t, r, out);
+    for (size_t n = 0; n < N; ++n) {
+      alignas(64) float o[16];
+      out[n].store_rows(o, o + 8);
+      for (size_t l = 0; l < 16; ++l) {
+        const glm::vec3 p = pts[k + 16 * n + l];
+        const float scalar = shading::detail::pcf_lequal_scalar<F, kBorderWrap>(tex.level(0), p, kBorder);
+        ASSERT_EQ(std::bit_cast<uint32_t>(o[l]), std::bit_cast<uint32_t>(scalar))
+            << what << " batch of " << N << ", lookup " << n << ", lane " << l << ", " << tex.width() << "x"
+            << tex.height() << (kBorderWrap ? " border" : " edge") << " at (" << p.x << ", " << p.y << ", " << p.z
+            << ")";
+      }
+    }
+  }
+}
 
 template <TexelFormat F, bool kBorderWrap>
 void expect_lanes_match(const Texture2D& tex, const std::vector<glm::vec3>& pts, const char* what) {
@@ -53,6 +89,35 @@ void expect_lanes_match(const Texture2D& tex, const std::vector<glm::vec3>& pts,
       ASSERT_EQ(std::bit_cast<uint32_t>(out[l]), std::bit_cast<uint32_t>(scalar))
           << what << " sixteen lanes, lane " << l << ", " << tex.width() << "x" << tex.height()
           << (kBorderWrap ? " border" : " edge") << " at (" << p.x << ", " << p.y << ", " << p.z << ")";
+    }
+  }
+  expect_batches_match<F, kBorderWrap, 4>(kernel, tex, pts, what);
+  expect_batches_match<F, kBorderWrap, 3>(kernel, tex, pts, what);
+}
+
+// Groups of eight lanes with neighbouring footprints, as a fragment pair's eight pixels have: lane l's texel
+// indices (i0, j0) = (floor(s · w − 0.5), floor(t · h − 0.5)) lie within spans (kx, ky) of the group's corner
+// (x0, y0), lanes 0 and 7 at the ends of the x span and lanes 1 and 6 at those of the y span. Spans up to the
+// window's (6, 2) and one past it; corners at 0, anywhere, and at the last ones a window can start at (w − 8,
+// h − 4) and one past. Needs w, h >= 2 (footprints inside the map); appends whole groups.
+void append_neighbour_groups(int w, int h, std::mt19937& rng, std::vector<glm::vec3>& pts) {
+  if (w < 2 || h < 2) return;
+  std::uniform_real_distribution<float> frac(0.05f, 0.95f), ref(-0.1f, 1.1f);
+  auto pick = [&](std::initializer_list<int> v) {
+    return *(v.begin() + std::uniform_int_distribution<size_t>(0, v.size() - 1)(rng));
+  };
+  auto coord = [&](int i, int n) { return (float(i) + 0.5f + frac(rng)) / float(n); };  // texel index i
+  for (int g = 0; g < 600; ++g) {
+    const int kx = std::min(pick({0, 3, 6, 6, 7}), w - 2), ky = std::min(pick({0, 1, 2, 2, 3}), h - 2);
+    auto corner = [&](int n, int k, int last) {  // last: the last corner a window can start at
+      const int c = pick({0, std::uniform_int_distribution<int>(0, n - 2 - k)(rng), last, last, last + 1});
+      return std::clamp(c, 0, n - 2 - k);
+    };
+    const int x0 = corner(w, kx, w - 8), y0 = corner(h, ky, h - 4);
+    for (int l = 0; l < 8; ++l) {
+      const int dx = l == 0 ? 0 : l == 7 ? kx : std::uniform_int_distribution<int>(0, kx)(rng);
+      const int dy = l == 1 ? 0 : l == 6 ? ky : std::uniform_int_distribution<int>(0, ky)(rng);
+      pts.emplace_back(coord(x0 + dx, w), coord(y0 + dy, h), ref(rng));
     }
   }
 }
@@ -93,6 +158,7 @@ std::vector<glm::vec3> coordinates(int w, int h, std::mt19937& rng) {
     for (int lane = 0; lane < 16; ++lane)
       for (int l = 0; l < 16; ++l)
         pts.push_back(l == lane ? glm::vec3(o, ref(rng)) : glm::vec3(inside_s(rng), inside_t(rng), ref(rng)));
+  append_neighbour_groups(w, h, rng, pts);
   return pts;
 }
 
@@ -106,7 +172,7 @@ void check_format(const Texture2D& tex, std::mt19937& rng, const char* what) {
 TEST(PcfSimd, EightAndSixteenLanesEqualTheScalarKernelOnTargetViews) {
   std::mt19937 rng(777);
   std::uniform_real_distribution<float> depth(0.0f, 1.0f);
-  for (auto [w, h] : {std::pair{37, 23}, {64, 64}, {1, 9}, {9, 1}, {1, 1}, {2, 2}, {65, 3}}) {
+  for (auto [w, h] : {std::pair{37, 23}, {64, 64}, {1, 9}, {9, 1}, {1, 1}, {2, 2}, {65, 3}, {8, 4}}) {
     for (raster::DepthFormat f : {raster::DepthFormat::d16, raster::DepthFormat::d24, raster::DepthFormat::d32f}) {
       raster::DepthTarget target(w, h, f);
       for (int y = 0; y < h; ++y)
@@ -126,16 +192,16 @@ TEST(PcfSimd, EightAndSixteenLanesEqualTheScalarKernelOnTargetViews) {
   }
 }
 
-// Tightly packed storage: the last texel of the last row is the last float of the allocation, so a kernel that
-// read one texel too far would be caught by sanitizers and by the comparison.
+// Tightly packed storage (d32f and d16): the last texel of the last row ends the texels of the allocation, so a
+// kernel that read one texel too far would be caught by sanitizers and by the comparison.
 TEST(PcfSimd, EightAndSixteenLanesEqualTheScalarKernelOnPackedTextures) {
   std::mt19937 rng(4242);
   std::uniform_real_distribution<float> depth(0.0f, 1.0f);
-  for (auto [w, h] : {std::pair{16, 16}, {5, 7}, {2, 1}, {1, 2}}) {
+  for (auto [w, h] : {std::pair{16, 16}, {5, 7}, {2, 1}, {1, 2}, {8, 4}, {12, 6}}) {
     std::vector<float> z(size_t(w) * h);
     for (float& v : z) v = depth(rng);
-    const Texture2D tex = Texture2D::from_floats(w, h, TexelFormat::d32f, 1, z);
-    check_format<TexelFormat::d32f>(tex, rng, "d32f packed");
+    check_format<TexelFormat::d32f>(Texture2D::from_floats(w, h, TexelFormat::d32f, 1, z), rng, "d32f packed");
+    check_format<TexelFormat::d16>(Texture2D::from_floats(w, h, TexelFormat::d16, 1, z), rng, "d16 packed");
   }
 }
 
