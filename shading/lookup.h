@@ -5,6 +5,7 @@
 // from the quad like a fragment shader's texture(). All inline, no allocation, one format switch per lookup.
 #pragma once
 #include <cmath>
+#include <type_traits>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -35,7 +36,7 @@ inline glm::vec4 sample_color(const Texture2D& t, const Sampler& s, const LevelC
 template <TexelFormat F>
 inline float sample_shadow(const Texture2D& t, const Sampler& s, const LevelChoice& c, glm::vec3 str, glm::ivec2 off) {
   const glm::vec2 st(str.x, str.y);
-  const float border = border_texel(F, s.border_color).r;
+  const float border = border_red(F, s.border_color);
   if (s.compare_mode == CompareMode::ref_to_texture) {
     const float ref = compare_reference(F, str.z);
     const float r0 =
@@ -74,6 +75,49 @@ inline float texture_at(const Texture2D& t, const Sampler& s, glm::vec3 str, flo
   return visit_format(t.format(),
                       [&](auto f) { return detail::sample_shadow<decltype(f)::value>(t, s, c, str, offset); });
 }
+
+namespace detail {
+
+// The NEAREST shadow case: compare mode on, NEAREST for both filters without mips (or with one level, so λ cannot
+// matter), clamp_to_edge or clamp_to_border on both axes, a depth format.
+inline bool nearest_fast_path_applies(const Texture2D& t, const Sampler& s) {
+  return s.compare_mode == CompareMode::ref_to_texture && s.mag_filter == Filter::nearest &&
+         s.min_filter == Filter::nearest && (s.mip_filter == MipFilter::none || t.levels() == 1) &&
+         s.wrap_s == s.wrap_t && (s.wrap_s == Wrap::clamp_to_edge || s.wrap_s == Wrap::clamp_to_border) &&
+         is_depth(t.format());
+}
+
+// visit_format for the three depth formats nearest_fast_path_applies admits (any other format is taken as d32f).
+template <class Fn>
+decltype(auto) visit_depth_format(TexelFormat f, Fn&& fn) {
+  using TF = TexelFormat;
+  if (f == TF::d16) return fn(std::integral_constant<TF, TF::d16>{});
+  if (f == TF::d24) return fn(std::integral_constant<TF, TF::d24>{});
+  return fn(std::integral_constant<TF, TF::d32f>{});
+}
+
+// texture_at(t, s, str, λ) for level 0 of a texture and sampler nearest_fast_path_applies to, bit for bit:
+// nearest_index's texel (floor by integer conversion: exact for the clamped |u| <= 2^30, with no call to floorf,
+// which GCC does not inline under these flags), the border where clamp_to_border leaves the map, and
+// reduce_compare's comparison, without the general path's level choice, footprint and blend.
+template <TexelFormat F>
+inline float nearest_compare(const TextureLevel& L, bool border_wrap, CompareFunc func, float border_depth,
+                             glm::vec3 str) {
+  auto index = [](float s, float size) {
+    const float u = clamp_texel_coord(s * size);
+    const int i = int(u);  // toward zero; one less where that rounded a negative u up
+    return float(i) > u ? i - 1 : i;
+  };
+  int i = index(str.x, L.fwidth), j = index(str.y, L.fheight);
+  const float ref = compare_reference(F, str.z);
+  if (unsigned(i) >= unsigned(L.width) || unsigned(j) >= unsigned(L.height)) {
+    if (border_wrap) return compare_ref(func, ref, border_depth);
+    i = std::clamp(i, 0, L.width - 1), j = std::clamp(j, 0, L.height - 1);
+  }
+  return compare_ref(func, ref, Texel<F>::red(L.row(j), i));
+}
+
+}  // namespace detail
 
 // ---- Per-lane lookups ------------------------------------------------------------------------------------------
 

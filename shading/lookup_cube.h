@@ -79,7 +79,7 @@ inline glm::vec4 cube_color(const TextureCube& cube, const Sampler& s, const Lev
 template <TexelFormat F>
 inline float cube_shadow(const TextureCube& cube, const Sampler& s, const LevelChoice& lc, const CubeCoord& c,
                          float ref) {
-  const float border = border_texel(F, s.border_color).r;
+  const float border = border_red(F, s.border_color);
   if (s.compare_mode == CompareMode::ref_to_texture) {
     const float r = compare_reference(F, ref);
     auto level = [&](int l) {

@@ -727,7 +727,7 @@ inline bool pcf_fast_path_applies(const Texture2D& t, const Sampler& s) {
 // One lookup through the kernels for a texture and sampler pcf_fast_path_applies to.
 inline float pcf_fast(const Texture2D& t, const Sampler& s, glm::vec3 str) {
   const TextureLevel& L = t.level(0);
-  const float border = border_texel(t.format(), s.border_color).r;
+  const float border = border_red(t.format(), s.border_color);
   const bool bw = s.wrap_s == Wrap::clamp_to_border;
   switch (t.format()) {
     case TexelFormat::d16:

@@ -1,5 +1,6 @@
 // ShadowLookup2D: the per-draw fast path for the common shadow case gives bit-identical results to the generic
-// lookups, for every format and wrap it covers, inside, at and beyond the edges; other samplers fall back.
+// lookups, for every format and wrap it covers, inside, at and beyond the edges; other samplers fall back. So does
+// GenericShadowKernel's shorter path for NEAREST compare samplers (detail::nearest_compare).
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -8,6 +9,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "raster/simd/vec.h"
 #include "raster/target.h"
 #include "shading/shadow_lookup.h"
 
@@ -123,6 +125,98 @@ TEST(ShadowLookup2D, ProjAndQuadForms) {
   EXPECT_EQ(q[1], 1.0f);
   EXPECT_EQ(q[2], 0.0f);
   EXPECT_EQ(q[3], 0.8125f);
+}
+
+// NEAREST shadow samplers: GenericShadowKernel's short path (one texel read and compared) equals the general
+// lookup bit for bit, in its one-lane and eight-lane forms: the three depth formats, views of padded targets
+// and packed storage, sizes down to one texel, clamp_to_edge and clamp_to_border (border depths inside and
+// outside [0, 1], which d16 and d24 clamp), all eight compare functions, references outside [0, 1], coordinates
+// on every texel boundary and centre, around and beyond the map, huge and non-finite ones.
+TEST(GenericShadowKernel, NearestPathEqualsTheGeneralLookup) {
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<float> depth(0.0f, 1.0f), coord(-0.3f, 1.3f), ref(-0.2f, 1.2f);
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  int checked = 0;
+  for (auto [w, h] : {std::pair{37, 23}, {1, 1}, {2, 3}, {64, 5}}) {
+    for (auto f : {shading::TexelFormat::d16, shading::TexelFormat::d24, shading::TexelFormat::d32f}) {
+      std::vector<float> z(size_t(w) * h);
+      for (float& v : z) v = depth(rng);
+      const raster::DepthFormat df = f == shading::TexelFormat::d16   ? raster::DepthFormat::d16
+                               : f == shading::TexelFormat::d24 ? raster::DepthFormat::d24
+                                                                 : raster::DepthFormat::d32f;
+      raster::DepthTarget target(w, h, df);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const float v = z[size_t(y) * w + x];
+          if (df == raster::DepthFormat::d16) target.row<uint16_t>(y)[x] = uint16_t(v * 65535.0f);
+          if (df == raster::DepthFormat::d24) target.row<uint32_t>(y)[x] = uint32_t(v * 16777215.0f) | 0xAB000000u;
+          if (df == raster::DepthFormat::d32f) target.row<float>(y)[x] = v;
+        }
+      const Texture2D textures[] = {Texture2D::from_floats(w, h, f, 1, z), Texture2D::view(target)};
+      std::vector<glm::vec3> pts;
+      for (int k = 0; k < 400; ++k) pts.emplace_back(coord(rng), coord(rng), ref(rng));
+      for (int i = -1; i <= w + 1; ++i)
+        for (int j = -1; j <= h + 1; j += 2)
+          for (float d : {0.0f, 0.5f})
+            pts.emplace_back((float(i) + d) / float(w), (float(j) + d) / float(h), ref(rng));
+      for (glm::vec3 q : {glm::vec3(1e9f, -1e9f, 0.5f), glm::vec3(-inf, inf, 0.5f), glm::vec3(nan, 0.5f, 0.5f),
+                          glm::vec3(0.5f, nan, 0.5f), glm::vec3(0.5f, 0.5f, nan), glm::vec3(0.5f, 0.5f, inf),
+                          glm::vec3(-1e-7f, 1.0f + 1e-7f, 0.5f), glm::vec3(1.0f, 1.0f, 0.5f)})
+        pts.push_back(q);
+      while (pts.size() % 8) pts.emplace_back(0.5f, 0.5f, 0.5f);
+      for (const Texture2D& tex : textures)
+        for (Wrap wrap : {Wrap::clamp_to_edge, Wrap::clamp_to_border})
+          for (int func = 0; func < 8; ++func)
+            for (float border : {0.4f, -0.5f, 1.5f}) {
+              Sampler s = Sampler::pcf(CompareFunc(func), wrap, border);
+              s.mag_filter = s.min_filter = shading::Filter::nearest;
+              const shading::GenericShadowKernel kernel(&tex, s);
+              ASSERT_TRUE(kernel.nearest_fast());
+              for (size_t k = 0; k < pts.size(); k += 8) {
+                alignas(32) float ps[8], pt[8], pr[8], out[8];
+                for (int l = 0; l < 8; ++l) ps[l] = pts[k + l].x, pt[l] = pts[k + l].y, pr[l] = pts[k + l].z;
+                kernel(raster::simd::VecF32::load(ps), raster::simd::VecF32::load(pt), raster::simd::VecF32::load(pr))
+                    .store(out);
+                for (int l = 0; l < 8; ++l) {
+                  const glm::vec3 p = pts[k + l];
+                  const float general = shading::texture_at(tex, s, p, 0.0f);
+                  ASSERT_EQ(std::bit_cast<uint32_t>(kernel(p)), std::bit_cast<uint32_t>(general))
+                      << int(f) << " " << w << "x" << h << " wrap " << int(wrap) << " func " << func << " border "
+                      << border << " at (" << p.x << ", " << p.y << ", " << p.z << ")";
+                  ASSERT_EQ(std::bit_cast<uint32_t>(out[l]), std::bit_cast<uint32_t>(general)) << "eight lanes";
+                  ++checked;
+                }
+              }
+            }
+    }
+  }
+  EXPECT_GT(checked, 100000);
+}
+
+// Samplers the NEAREST path does not cover keep the general lookup.
+TEST(GenericShadowKernel, OtherSamplersTakeTheGeneralLookup) {
+  const std::vector<float> z{0.2f, 0.4f, 0.6f, 0.8f};
+  const Texture2D d32 = Texture2D::from_floats(2, 2, shading::TexelFormat::d32f, 1, z);
+  const Texture2D mipped = Texture2D::from_floats(2, 2, shading::TexelFormat::d32f, 1, z, true);
+  const Texture2D colour = Texture2D::from_floats(2, 2, shading::TexelFormat::r32f, 1, z);
+  Sampler nearest = Sampler::pcf();
+  nearest.mag_filter = nearest.min_filter = shading::Filter::nearest;
+  EXPECT_TRUE(shading::GenericShadowKernel(&d32, nearest).nearest_fast());
+  EXPECT_FALSE(shading::GenericShadowKernel(&colour, nearest).nearest_fast());
+  auto with = [&](auto change) {
+    Sampler s = nearest;
+    change(s);
+    return s;
+  };
+  for (const Sampler& s : {Sampler::pcf(), with([](Sampler& x) { x.min_filter = shading::Filter::linear; }),
+                           with([](Sampler& x) { x.compare_mode = shading::CompareMode::none; }),
+                           with([](Sampler& x) { x.wrap_s = x.wrap_t = Wrap::repeat; }),
+                           with([](Sampler& x) { x.wrap_s = x.wrap_t = Wrap::clamp; }),
+                           with([](Sampler& x) { x.wrap_t = Wrap::clamp_to_border; })})
+    EXPECT_FALSE(shading::GenericShadowKernel(&d32, s).nearest_fast());
+  const Sampler mips = with([](Sampler& x) { x.mip_filter = shading::MipFilter::nearest; });
+  EXPECT_FALSE(shading::GenericShadowKernel(&mipped, mips).nearest_fast());
+  EXPECT_TRUE(shading::GenericShadowKernel(&d32, mips).nearest_fast());  // one level: λ cannot matter
 }
 
 }  // namespace
