@@ -489,21 +489,21 @@ inline __m512i group_min8(__m512i v) {
   return _mm512_maskz_min_epi32(kAll16, v, _mm512_maskz_shuffle_epi32(kAll16, v, kLanes));
 }
 
-// The window path. A camera pass's sixteen-lane lookup is one tap at a fragment pair's eight points in each group
-// of eight lanes, and those points are neighbours: their footprints mostly lie within a few texels of each other.
-// When every group's footprints (columns i0 .. i0 + 1, rows j0 .. j0 + 1) lie within the 8 × 4 texels from the
-// group's smallest i0 and j0, and that window lies inside the map, window_taps16 reads it as four 8-texel rows per
-// group and picks each tap with permutes across two registers, instead of 32 scalar loads, their offsets moved to
-// general registers and the vector inserts. window_fits16 returns the lanes that fit (the lookup takes the window
-// path only when all do), each lane's index in its group's window (dy · 8 + dx), and the window's first texel as
-// an element offset in texels of the format (read from lanes 0 and 8). Its lanes must hold i0, j0 already found
-// inside the map (0 <= i0 <= W − 2, 0 <= j0 <= H − 2), so the minimum is no smaller than 0. The taps are the same
-// texels as load_pairs16's, so the results are the same bits. Measured on the 2-core AMD EPYC (Zen 5), 2 threads,
-// the PCF bench's Poisson pass (16 taps, 1920×1080 into a 2048² d32f map, three runs each, alternating): 17.0 →
-// 16.0 ms on its own, and the rest with pcf_lequal_gather16_n (below). For the eight-lane lookups of one PCF tap
-// per pixel the same window (one group, four permutes) measured slower, 2.5 → 3.0 ms (four runs each): there no
-// other lookup hides the longer chain before the loads (a minimum across lanes, then a scalar address), so
-// pcf_lequal_gather8 keeps its pairs.
+// The window path. A camera pass's sixteen-lane lookup is one tap at a fragment pair's eight points in each group of
+// eight lanes, and those points are neighbours: their footprints mostly lie within a few texels of each other. When
+// every group's footprints (columns i0 .. i0 + 1, rows j0 .. j0 + 1) lie within the 8 × 4 texels from the group's
+// smallest i0 and j0, and that window lies inside the map, window_taps16 reads it as four 8-texel rows per group and
+// picks each tap with permutes across two registers, instead of 32 scalar loads, their offsets moved to general
+// registers and the vector inserts. window_fits16 returns the lanes that fit (the lookup takes the window path only
+// when all do), each lane's index in its group's window (dy · 8 + dx), and the window's first texel as an element
+// offset in texels of the format (read from lanes 0 and 8). It means something only where every lane's i0, j0 lies
+// inside the map (0 <= i0 <= W − 2, 0 <= j0 <= H − 2, so no minimum is below 0): pcf_lequal_gather16 tests that first,
+// pcf_lequal_gather16_n discards the result otherwise. The taps are the same texels as load_pairs16's, so the results
+// are the same bits. Measured on the 2-core AMD EPYC (Zen 5), 2 threads, the PCF bench's Poisson pass (16 taps,
+// 1920×1080 into a 2048² d32f map, three runs each, alternating): 17.0 → 16.0 ms on its own, and the rest with
+// pcf_lequal_gather16_n (below). For the eight-lane lookups of one PCF tap per pixel the same window (one group, four
+// permutes) measured slower, 2.5 → 3.0 ms (four runs each): there no other lookup hides the longer chain before the
+// loads (a minimum across lanes, then a scalar address), so pcf_lequal_gather8 keeps its pairs.
 template <TexelFormat F>
 inline __mmask16 window_fits16(const Pcf16Level& L, __m512i i0, __m512i j0, __m512i& idx, __m512i& corner) {
   const __m512i x0 = group_min8(i0), y0 = group_min8(j0);

@@ -54,35 +54,37 @@ struct PcfKernel {
 // with border_texel inlined (filter.h) on the 2-core AMD EPYC (Zen 5, AVX-512 build, shadowlab_bench_frame
 // --threads 2, the tutorial frame at 1920×1080, three runs each, alternating with the build before): Poisson
 // 292–295 → 118–120 ms, early-bail 133–153 → 88–89 ms, hard 89–106 → 77–91 ms.
-struct GenericShadowKernel {
-  const Texture2D* texture;
-  Sampler sampler;
-
+class GenericShadowKernel {
+ public:
+  // The texture (which must outlive the kernel and keep its levels) and sampler are fixed for the kernel's life:
+  // what the NEAREST path needs of them is read here, once.
   GenericShadowKernel(const Texture2D* texture, const Sampler& sampler)
-      : texture(texture), sampler(sampler), nearest_(detail::nearest_fast_path_applies(*texture, sampler)),
-        level0_(texture->level(0)), border_(border_red(texture->format(), sampler.border_color)) {}
+      : texture_(texture), sampler_(sampler), nearest_(detail::nearest_fast_path_applies(*texture, sampler)),
+        level0_(texture->level(0)), border_(border_red(texture_->format(), sampler.border_color)) {}
+  const Texture2D& texture() const { return *texture_; }
+  const Sampler& sampler() const { return sampler_; }
   // Whether lookups take detail::nearest_compare (exposed for tests).
   bool nearest_fast() const { return nearest_; }
 
   float operator()(glm::vec3 str) const {
     if (nearest_)
-      return detail::visit_depth_format(texture->format(), [&](auto f) {
-        return detail::nearest_compare<decltype(f)::value>(level0_, border_wrap(), sampler.compare_func, border_, str);
+      return detail::visit_depth_format(texture_->format(), [&](auto f) {
+        return detail::nearest_compare<decltype(f)::value>(level0_, border_wrap(), sampler_.compare_func, border_, str);
       });
-    return shading::texture_at(*texture, sampler, str, 0.0f);
+    return shading::texture_at(*texture_, sampler_, str, 0.0f);
   }
   raster::simd::VecF32 operator()(raster::simd::VecF32 s, raster::simd::VecF32 t, raster::simd::VecF32 ref) const {
     alignas(32) float ps[8], pt[8], pr[8], out[8];
     s.store(ps), t.store(pt), ref.store(pr);
     if (nearest_) {  // the format chosen once for the eight lanes
-      detail::visit_depth_format(texture->format(), [&](auto f) {
+      detail::visit_depth_format(texture_->format(), [&](auto f) {
         for (int l = 0; l < 8; ++l)
-          out[l] = detail::nearest_compare<decltype(f)::value>(level0_, border_wrap(), sampler.compare_func, border_,
+          out[l] = detail::nearest_compare<decltype(f)::value>(level0_, border_wrap(), sampler_.compare_func, border_,
                                                                glm::vec3(ps[l], pt[l], pr[l]));
         return 0;
       });
     } else {
-      for (int l = 0; l < 8; ++l) out[l] = shading::texture_at(*texture, sampler, glm::vec3(ps[l], pt[l], pr[l]), 0.0f);
+      for (int l = 0; l < 8; ++l) out[l] = shading::texture_at(*texture_, sampler_, glm::vec3(ps[l], pt[l], pr[l]), 0.0f);
     }
     return raster::simd::VecF32::load(out);
   }
@@ -98,7 +100,9 @@ struct GenericShadowKernel {
   }
 
  private:
-  bool border_wrap() const { return sampler.wrap_s == Wrap::clamp_to_border; }
+  bool border_wrap() const { return sampler_.wrap_s == Wrap::clamp_to_border; }
+  const Texture2D* texture_;
+  Sampler sampler_;
   bool nearest_;
   TextureLevel level0_;
   float border_;

@@ -5,10 +5,13 @@
 // wholly inside the map (the kernels' short paths) and groups with a single lane outside it, in every lane
 // position of sixteen; groups of eight neighbouring footprints (the sixteen-lane window path) up to and one texel
 // past the window's 8 × 4 texels and the map's last column and row; and several sixteen-lane lookups handed over
-// at once (PcfKernel's batch form, pcf_lequal_x16_n), some of them leaving the window path. The test binary is
+// at once (PcfKernel's batch form, pcf_lequal_x16_n), some of them leaving the window path; and maps that end
+// where an unreadable page begins, so that any read past the last texel faults. The test binary is
 // built for the first instruction set of SHADOWLAB_ISAS: the sixteen-lane kernel's AVX-512 form (and the batch's)
 // is what a build configured with SHADOWLAB_ISAS=avx512 tests, on a CPU that has it.
 #include <gtest/gtest.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -16,6 +19,7 @@
 #include <initializer_list>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "raster/simd/vec.h"
@@ -33,7 +37,7 @@ constexpr float kBorder = 0.75f;
 
 // N sixteen-lane lookups at once (the batch form), lane by lane against the scalar kernel.
 template <TexelFormat F, bool kBorderWrap, size_t N>
-void expect_batches_match(const shading::PcfKernel<F, kBorderWrap>& kernel, const Texture2D& tex,
+void expect_batches_match(const shading::PcfKernel<F, kBorderWrap>& kernel, const shading::TextureLevel& L,
                           const std::vector<glm::vec3>& pts, const char* what) {
   for (size_t k = 0; k + 16 * N <= pts.size(); k += 16 * N) {
     std::array<VecF32x16, N> s, t, r, out;
@@ -52,10 +56,10 @@ void expect_batches_match(const shading::PcfKernel<F, kBorderWrap>& kernel, cons
       out[n].store_rows(o, o + 8);
       for (size_t l = 0; l < 16; ++l) {
         const glm::vec3 p = pts[k + 16 * n + l];
-        const float scalar = shading::detail::pcf_lequal_scalar<F, kBorderWrap>(tex.level(0), p, kBorder);
+        const float scalar = shading::detail::pcf_lequal_scalar<F, kBorderWrap>(L, p, kBorder);
         ASSERT_EQ(std::bit_cast<uint32_t>(o[l]), std::bit_cast<uint32_t>(scalar))
-            << what << " batch of " << N << ", lookup " << n << ", lane " << l << ", " << tex.width() << "x"
-            << tex.height() << (kBorderWrap ? " border" : " edge") << " at (" << p.x << ", " << p.y << ", " << p.z
+            << what << " batch of " << N << ", lookup " << n << ", lane " << l << ", " << L.width << "x"
+            << L.height << (kBorderWrap ? " border" : " edge") << " at (" << p.x << ", " << p.y << ", " << p.z
             << ")";
       }
     }
@@ -63,17 +67,17 @@ void expect_batches_match(const shading::PcfKernel<F, kBorderWrap>& kernel, cons
 }
 
 template <TexelFormat F, bool kBorderWrap>
-void expect_lanes_match(const Texture2D& tex, const std::vector<glm::vec3>& pts, const char* what) {
-  const shading::PcfKernel<F, kBorderWrap> kernel{tex.level(0), kBorder};
+void expect_lanes_match(const shading::TextureLevel& L, const std::vector<glm::vec3>& pts, const char* what) {
+  const shading::PcfKernel<F, kBorderWrap> kernel{L, kBorder};
   for (size_t k = 0; k + 8 <= pts.size(); k += 8) {
     alignas(32) float s[8], t[8], r[8], out[8];
     for (int l = 0; l < 8; ++l) s[l] = pts[k + l].x, t[l] = pts[k + l].y, r[l] = pts[k + l].z;
     kernel(VecF32::load(s), VecF32::load(t), VecF32::load(r)).store(out);
     for (int l = 0; l < 8; ++l) {
       const glm::vec3 p = pts[k + l];
-      const float scalar = shading::detail::pcf_lequal_scalar<F, kBorderWrap>(tex.level(0), p, kBorder);
+      const float scalar = shading::detail::pcf_lequal_scalar<F, kBorderWrap>(L, p, kBorder);
       ASSERT_EQ(std::bit_cast<uint32_t>(out[l]), std::bit_cast<uint32_t>(scalar))
-          << what << " " << tex.width() << "x" << tex.height() << (kBorderWrap ? " border" : " edge") << " at ("
+          << what << " " << L.width << "x" << L.height << (kBorderWrap ? " border" : " edge") << " at ("
           << p.x << ", " << p.y << ", " << p.z << ")";
       ASSERT_EQ(std::bit_cast<uint32_t>(kernel(p)), std::bit_cast<uint32_t>(scalar));
     }
@@ -85,14 +89,14 @@ void expect_lanes_match(const Texture2D& tex, const std::vector<glm::vec3>& pts,
         .store_rows(out, out + 8);
     for (int l = 0; l < 16; ++l) {
       const glm::vec3 p = pts[k + l];
-      const float scalar = shading::detail::pcf_lequal_scalar<F, kBorderWrap>(tex.level(0), p, kBorder);
+      const float scalar = shading::detail::pcf_lequal_scalar<F, kBorderWrap>(L, p, kBorder);
       ASSERT_EQ(std::bit_cast<uint32_t>(out[l]), std::bit_cast<uint32_t>(scalar))
-          << what << " sixteen lanes, lane " << l << ", " << tex.width() << "x" << tex.height()
+          << what << " sixteen lanes, lane " << l << ", " << L.width << "x" << L.height
           << (kBorderWrap ? " border" : " edge") << " at (" << p.x << ", " << p.y << ", " << p.z << ")";
     }
   }
-  expect_batches_match<F, kBorderWrap, 4>(kernel, tex, pts, what);
-  expect_batches_match<F, kBorderWrap, 3>(kernel, tex, pts, what);
+  expect_batches_match<F, kBorderWrap, 4>(kernel, L, pts, what);
+  expect_batches_match<F, kBorderWrap, 3>(kernel, L, pts, what);
 }
 
 // Groups of eight lanes with neighbouring footprints, as a fragment pair's eight pixels have: lane l's texel
@@ -163,10 +167,14 @@ std::vector<glm::vec3> coordinates(int w, int h, std::mt19937& rng) {
 }
 
 template <TexelFormat F>
+void check_format(const shading::TextureLevel& L, std::mt19937& rng, const char* what) {
+  const std::vector<glm::vec3> pts = coordinates(L.width, L.height, rng);
+  expect_lanes_match<F, false>(L, pts, what);
+  expect_lanes_match<F, true>(L, pts, what);
+}
+template <TexelFormat F>
 void check_format(const Texture2D& tex, std::mt19937& rng, const char* what) {
-  const std::vector<glm::vec3> pts = coordinates(tex.width(), tex.height(), rng);
-  expect_lanes_match<F, false>(tex, pts, what);
-  expect_lanes_match<F, true>(tex, pts, what);
+  check_format<F>(tex.level(0), rng, what);
 }
 
 TEST(PcfSimd, EightAndSixteenLanesEqualTheScalarKernelOnTargetViews) {
@@ -192,8 +200,7 @@ TEST(PcfSimd, EightAndSixteenLanesEqualTheScalarKernelOnTargetViews) {
   }
 }
 
-// Tightly packed storage (d32f and d16): the last texel of the last row ends the texels of the allocation, so a
-// kernel that read one texel too far would be caught by sanitizers and by the comparison.
+// Tightly packed storage (d32f and d16): the comparison in another layout (rows one texel apart).
 TEST(PcfSimd, EightAndSixteenLanesEqualTheScalarKernelOnPackedTextures) {
   std::mt19937 rng(4242);
   std::uniform_real_distribution<float> depth(0.0f, 1.0f);
@@ -202,6 +209,53 @@ TEST(PcfSimd, EightAndSixteenLanesEqualTheScalarKernelOnPackedTextures) {
     for (float& v : z) v = depth(rng);
     check_format<TexelFormat::d32f>(Texture2D::from_floats(w, h, TexelFormat::d32f, 1, z), rng, "d32f packed");
     check_format<TexelFormat::d16>(Texture2D::from_floats(w, h, TexelFormat::d16, 1, z), rng, "d16 packed");
+  }
+}
+
+// A w×h map of 2- or 4-byte texels, packed, whose last texel ends where an unreadable page begins (mmap, then
+// mprotect): a kernel that reads a byte past the map faults, where a comparison of values could not tell (a
+// window one column or row too far loads texels it never picks) and an allocator's rounding would hide it.
+class GuardedLevel {
+ public:
+  GuardedLevel(int w, int h, int texel_bytes) {
+    const size_t page = size_t(sysconf(_SC_PAGESIZE)), bytes = size_t(w) * size_t(h) * size_t(texel_bytes);
+    size_ = (bytes + page - 1) / page * page + page;
+    void* p = mmap(nullptr, size_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) throw std::runtime_error("mmap failed");
+    base_ = static_cast<std::byte*>(p);
+    if (mprotect(base_ + size_ - page, page, PROT_NONE) != 0) throw std::runtime_error("mprotect failed");
+    level_ = {base_ + size_ - page - bytes, size_t(w) * size_t(texel_bytes), w, h, float(w), float(h)};
+  }
+  ~GuardedLevel() { munmap(base_, size_); }
+  GuardedLevel(const GuardedLevel&) = delete;
+  GuardedLevel& operator=(const GuardedLevel&) = delete;
+  const shading::TextureLevel& level() const { return level_; }
+  std::byte* texels() { return const_cast<std::byte*>(level_.data); }
+
+ private:
+  std::byte* base_ = nullptr;
+  size_t size_ = 0;
+  shading::TextureLevel level_;
+};
+
+TEST(PcfSimd, KernelsNeverReadPastTheMap) {
+  std::mt19937 rng(31337);
+  std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+  for (auto [w, h] : {std::pair{8, 4}, {9, 5}, {12, 6}, {37, 23}}) {
+    for (TexelFormat f : {TexelFormat::d16, TexelFormat::d24, TexelFormat::d32f}) {
+      GuardedLevel map(w, h, f == TexelFormat::d16 ? 2 : 4);
+      for (size_t k = 0; k < size_t(w) * size_t(h); ++k) {
+        const float z = depth(rng);
+        if (f == TexelFormat::d16) reinterpret_cast<uint16_t*>(map.texels())[k] = uint16_t(z * 65535.0f);
+        if (f == TexelFormat::d24) reinterpret_cast<uint32_t*>(map.texels())[k] = uint32_t(z * 16777215.0f) | 0xAB000000u;
+        if (f == TexelFormat::d32f) reinterpret_cast<float*>(map.texels())[k] = z;
+      }
+      switch (f) {
+        case TexelFormat::d16: check_format<TexelFormat::d16>(map.level(), rng, "d16 guarded"); break;
+        case TexelFormat::d24: check_format<TexelFormat::d24>(map.level(), rng, "d24 guarded"); break;
+        default: check_format<TexelFormat::d32f>(map.level(), rng, "d32f guarded"); break;
+      }
+    }
   }
 }
 
