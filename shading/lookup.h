@@ -97,24 +97,13 @@ decltype(auto) visit_depth_format(TexelFormat f, Fn&& fn) {
 }
 
 // texture_at(t, s, str, λ) for level 0 of a texture and sampler nearest_fast_path_applies to, bit for bit:
-// nearest_index's texel (floor by integer conversion: exact for the clamped |u| <= 2^30, with no call to floorf,
-// which GCC does not inline under these flags), the border where clamp_to_border leaves the map, and
-// reduce_compare's comparison, without the general path's level choice, footprint and blend.
+// footprint_2d's NEAREST texel (or the border) and reduce_compare's comparison of it, without the general path's
+// level choice, footprint record and blend.
 template <TexelFormat F>
-inline float nearest_compare(const TextureLevel& L, bool border_wrap, CompareFunc func, float border_depth,
-                             glm::vec3 str) {
-  auto index = [](float s, float size) {
-    const float u = clamp_texel_coord(s * size);
-    const int i = int(u);  // toward zero; one less where that rounded a negative u up
-    return float(i) > u ? i - 1 : i;
-  };
-  int i = index(str.x, L.fwidth), j = index(str.y, L.fheight);
-  const float ref = compare_reference(F, str.z);
-  if (unsigned(i) >= unsigned(L.width) || unsigned(j) >= unsigned(L.height)) {
-    if (border_wrap) return compare_ref(func, ref, border_depth);
-    i = std::clamp(i, 0, L.width - 1), j = std::clamp(j, 0, L.height - 1);
-  }
-  return compare_ref(func, ref, Texel<F>::red(L.row(j), i));
+inline float nearest_compare(const TextureLevel& L, Wrap wrap, CompareFunc func, float border_depth, glm::vec3 str) {
+  const int i = nearest_index(wrap, str.x, L.fwidth, L.width), j = nearest_index(wrap, str.y, L.fheight, L.height);
+  const float texel = i != kBorder && j != kBorder ? Texel<F>::red(L.row(j), i) : border_depth;
+  return compare_ref(func, compare_reference(F, str.z), texel);
 }
 
 }  // namespace detail

@@ -1,8 +1,8 @@
 // A shadow map lookup resolved once per draw. ShadowLookup2D snapshots a Texture2D and its compare sampler and
 // picks a path: the common shadow case (d16, d24 or d32f, compare LEQUAL, LINEAR without mips, clamp_to_edge
 // or clamp_to_border on both axes) runs a kernel specialised at compile time for that format and wrap
-// (pcf_kernel.h); every other sampler takes the generic lookups of lookup.h. Both give identical results (same
-// arithmetic in the same order); the bulk form is what conformance tests and benchmarks call.
+// (pcf_kernel.h, pcf_kernel16.h); every other sampler takes the generic lookups of lookup.h. Both give identical
+// results (same arithmetic in the same order); the bulk form is what conformance tests and benchmarks call.
 //
 //   // once per draw: a view of the depth pass's target (no copy) and a PCF sampler
 //   shading::ShadowLookup2D shadow(shading::Texture2D::view(depth_target), shading::Sampler::pcf());
@@ -15,7 +15,7 @@
 #include <stdexcept>
 
 #include "shading/lookup.h"
-#include "shading/pcf_kernel.h"
+#include "shading/pcf_kernel16.h"
 #include "raster/simd/isa.h"
 
 namespace shading {
@@ -53,7 +53,7 @@ struct PcfKernel {
 // (detail::nearest_compare: one texel read and compared; the tutorial's hard shadows and Poisson taps). Measured
 // with border_texel inlined (filter.h) on the 2-core AMD EPYC (Zen 5, AVX-512 build, shadowlab_bench_frame
 // --threads 2, the tutorial frame at 1920×1080, three runs each, alternating with the build before): Poisson
-// 292–295 → 118–120 ms, early-bail 133–153 → 88–89 ms, hard 89–106 → 77–91 ms.
+// 279–313 → 128–134 ms, early-bail 131 → 88–91 ms, hard 84–89 → 75–80 ms.
 class GenericShadowKernel {
  public:
   // The texture (which must outlive the kernel and keep its levels) and sampler are fixed for the kernel's life:
@@ -69,7 +69,8 @@ class GenericShadowKernel {
   float operator()(glm::vec3 str) const {
     if (nearest_)
       return detail::visit_depth_format(texture_->format(), [&](auto f) {
-        return detail::nearest_compare<decltype(f)::value>(level0_, border_wrap(), sampler_.compare_func, border_, str);
+        return detail::nearest_compare<decltype(f)::value>(level0_, sampler_.wrap_s, sampler_.compare_func, border_,
+                                                           str);
       });
     return shading::texture_at(*texture_, sampler_, str, 0.0f);
   }
@@ -79,7 +80,7 @@ class GenericShadowKernel {
     if (nearest_) {  // the format chosen once for the eight lanes
       detail::visit_depth_format(texture_->format(), [&](auto f) {
         for (int l = 0; l < 8; ++l)
-          out[l] = detail::nearest_compare<decltype(f)::value>(level0_, border_wrap(), sampler_.compare_func, border_,
+          out[l] = detail::nearest_compare<decltype(f)::value>(level0_, sampler_.wrap_s, sampler_.compare_func, border_,
                                                                glm::vec3(ps[l], pt[l], pr[l]));
         return 0;
       });
@@ -100,7 +101,6 @@ class GenericShadowKernel {
   }
 
  private:
-  bool border_wrap() const { return sampler_.wrap_s == Wrap::clamp_to_border; }
   const Texture2D* texture_;
   Sampler sampler_;
   bool nearest_;

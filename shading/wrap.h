@@ -49,12 +49,20 @@ inline float prewrap_coord(Wrap w, float s) {
   return s > 0.0f ? (s < 1.0f ? s : 1.0f) : 0.0f;  // NaN -> 0
 }
 
+// int(floor(u)) for u through clamp_texel_coord (|u| <= 2^30, never NaN): truncated, then one less where that
+// rounded a negative u up. Exact there, and no call: GCC does not inline floorf under the project's flags, and
+// a NEAREST lookup's two floors were a call each.
+inline int floor_index(float u) {
+  const int i = int(u);
+  return float(i) > u ? i - 1 : i;
+}
+
 // NEAREST along one axis: the texel index (or kBorder). `offset` is textureOffset's integer offset.
 inline int nearest_index(Wrap w, float s, float size, int n, int offset = 0) {
   const float u = clamp_texel_coord(prewrap_coord(w, s) * size);
   // Legacy clamp under NEAREST reads the edge texel at s = 1 (u = n), as clamp_to_edge does.
   const Wrap eff = w == Wrap::clamp ? Wrap::clamp_to_edge : w;
-  return wrap_index(eff, int(std::floor(u)) + offset, n);
+  return wrap_index(eff, floor_index(u) + offset, n);
 }
 
 // LINEAR along one axis: the two indices (each possibly kBorder) and the weight of the second.
