@@ -31,8 +31,10 @@ SHADOWLAB_ISA_BEGIN
 inline constexpr int kBatchExtentBits = 14;
 static_assert(2 * (int64_t(1) << (2 * kBatchExtentBits)) < (int64_t(1) << 31), "area and edge values in int32");
 static_assert(kBatchExtentBits <= kNarrowCoefBits, "every batched triangle is narrow: it fits a DepthSetup");
-// Gather offsets are vertex index · 6 floats (WindowVertex), in int32: the batch is used when that fits.
-static_assert(sizeof(WindowVertex) == 6 * sizeof(float));
+// The batch holds vertex indices as int32 (as do the outcode gathers of assembly.h): it is used for draws of at
+// most kBatchMaxVertices vertices. Its loads take WindowVertex as six 32-bit fields (simd::load_records6).
+static_assert(sizeof(WindowVertex) == 6 * sizeof(float) && offsetof(WindowVertex, z) == 2 * sizeof(float) &&
+              offsetof(WindowVertex, sx) == 4 * sizeof(float) && offsetof(WindowVertex, sy) == 5 * sizeof(float));
 inline constexpr size_t kBatchMaxVertices = size_t(1) << 28;
 
 class SetupBatch {
@@ -117,17 +119,9 @@ inline void SetupBatch::run() {
   using simd::VecF32;
   using simd::VecI32;
   const float* wf = reinterpret_cast<const float*>(win_);
-  const int32_t* wi = reinterpret_cast<const int32_t*>(win_);
   VecF32 x[3], y[3], z[3];
   VecI32 sx[3], sy[3];
-  for (int v = 0; v < 3; ++v) {
-    const VecI32 base = VecI32::load(idx_[v]) * VecI32::splat(6);
-    x[v] = simd::gather(wf, base);
-    y[v] = simd::gather(wf + 1, base);
-    z[v] = simd::gather(wf + 2, base);
-    sx[v] = simd::gather(wi + 4, base);
-    sy[v] = simd::gather(wi + 5, base);
-  }
+  for (int v = 0; v < 3; ++v) simd::load_records6(wf, idx_[v], x[v], y[v], z[v], sx[v], sy[v]);
   const VecI32 xmin = simd::min(simd::min(sx[0], sx[1]), sx[2]), xmax = simd::max(simd::max(sx[0], sx[1]), sx[2]);
   const VecI32 ymin = simd::min(simd::min(sy[0], sy[1]), sy[2]), ymax = simd::max(simd::max(sy[0], sy[1]), sy[2]);
   const VecI32 limit = VecI32::splat(1 << kBatchExtentBits);

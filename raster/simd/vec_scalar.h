@@ -126,6 +126,15 @@ inline VecI32 shift_right(VecI32 a) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[
 inline VecI32 gather(const int32_t* base, VecI32 idx) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = base[idx.v[i]]; return r; }
 inline VecF32 gather(const float* base, VecI32 idx) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = base[idx.v[i]]; return r; }
 
+// Eight records of six 32-bit fields (see vec_avx2.h).
+inline void load_records6(const float* base, const int32_t* idx, VecF32& f0, VecF32& f1, VecF32& f2, VecI32& i4,
+                          VecI32& i5) {
+  for (int l = 0; l < 8; ++l) {
+    const float* p = base + 6 * ptrdiff_t(idx[l]);
+    f0.v[l] = p[0], f1.v[l] = p[1], f2.v[l] = p[2];
+    std::memcpy(&i4.v[l], p + 4, 4), std::memcpy(&i5.v[l], p + 5, 4);
+  }
+}
 inline void transpose8(VecF32 (&r)[8]) {
   VecF32 o[8];
   for (int i = 0; i < 8; ++i) for (int j = 0; j < 8; ++j) o[i].v[j] = r[j].v[i];

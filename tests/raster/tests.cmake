@@ -14,6 +14,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/bins_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/hiz_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/srgb8_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/simd_records_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/isa_namespace_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/thread_pool_test.cpp
 )
