@@ -31,8 +31,10 @@ SHADOWLAB_ISA_BEGIN
 inline constexpr int kBatchExtentBits = 14;
 static_assert(2 * (int64_t(1) << (2 * kBatchExtentBits)) < (int64_t(1) << 31), "area and edge values in int32");
 static_assert(kBatchExtentBits <= kNarrowCoefBits, "every batched triangle is narrow: it fits a DepthSetup");
-// The batch holds vertex indices as int32 (as do the outcode gathers of assembly.h): it is used for draws of at
-// most kBatchMaxVertices vertices. Its loads take WindowVertex as six 32-bit fields (simd::load_records6).
+// The batch holds vertex indices as int32 (as do the outcode gathers of assembly.h), which needs fewer than 2^31
+// vertices; it is used for draws of at most kBatchMaxVertices = 2^28, the bound from when its loads were gathers
+// with int32 offsets of 6 · index, kept (a larger draw sets its triangles up one at a time). Its loads take
+// WindowVertex as six 32-bit fields (simd::load_records6).
 static_assert(sizeof(WindowVertex) == 6 * sizeof(float) && offsetof(WindowVertex, z) == 2 * sizeof(float) &&
               offsetof(WindowVertex, sx) == 4 * sizeof(float) && offsetof(WindowVertex, sy) == 5 * sizeof(float));
 inline constexpr size_t kBatchMaxVertices = size_t(1) << 28;

@@ -4,6 +4,7 @@
 #pragma once
 #include <immintrin.h>
 
+#include <cstddef>
 #include <cstdint>
 #include "raster/simd/isa.h"
 
@@ -190,12 +191,13 @@ inline VecF32 gather(const float* base, VecI32 idx) { return {_mm256_i32gather_p
 
 // Eight records of six 32-bit fields, record l at base + 6 · idx[l] (the layout of WindowVertex): fields 0, 1
 // and 2 as floats and fields 4 and 5 as integers, lane l from record l, as gather() of each field gives them.
-// Two loads per record and a 4 × 4 transpose instead of five gathers: on the 2-core AMD EPYC (Zen 5), where a
-// gather of eight costs some twenty cycles, the triangle setup of setup_batch.h took 70 % of its time in them.
+// Two loads per record (bytes 0–15 and 16–23, nothing outside it) and a 4 × 4 transpose instead of five gathers:
+// in the dragon's depth pass on the 2-core AMD EPYC (Zen 5, AVX-512 path) the triangle setup of setup_batch.h
+// spent 70 % of its time in its gathers.
 inline void load_records6(const float* base, const int32_t* idx, VecF32& f0, VecF32& f1, VecF32& f2, VecI32& i4,
                           VecI32& i5) {
   const float* p[8];
-  for (int l = 0; l < 8; ++l) p[l] = base + 6 * ptrdiff_t(idx[l]);
+  for (int l = 0; l < 8; ++l) p[l] = base + 6 * std::ptrdiff_t(idx[l]);
   auto fields03 = [&](int a, int b) {  // fields 0–3 of records a (lanes 0–3) and b (lanes 4–7)
     return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p[a])), _mm_loadu_ps(p[b]), 1);
   };

@@ -2,6 +2,7 @@
 // results (IEEE float operations, std::fma, round-to-nearest-even).
 #pragma once
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include "raster/simd/isa.h"
@@ -130,7 +131,7 @@ inline VecF32 gather(const float* base, VecI32 idx) { VecF32 r; for (int i = 0; 
 inline void load_records6(const float* base, const int32_t* idx, VecF32& f0, VecF32& f1, VecF32& f2, VecI32& i4,
                           VecI32& i5) {
   for (int l = 0; l < 8; ++l) {
-    const float* p = base + 6 * ptrdiff_t(idx[l]);
+    const float* p = base + 6 * std::ptrdiff_t(idx[l]);
     f0.v[l] = p[0], f1.v[l] = p[1], f2.v[l] = p[2];
     std::memcpy(&i4.v[l], p + 4, 4), std::memcpy(&i5.v[l], p + 5, 4);
   }

@@ -1,4 +1,5 @@
-// simd::load_records6 (raster/simd/vec_avx2.h, vec_scalar.h): eight six-field records picked by index, split
+// simd::load_records6 (raster/simd/vec_avx2.h; vec_scalar.h's where the scalar set is the one tests are built
+// for, see CMakeLists.txt): eight six-field records picked by index, split
 // into lanes, must give what a gather of each field gives, for any indices (repeated, first, last, in any
 // order), and must read nothing outside the records it picks: the last record of the array ends where an
 // unreadable page begins, so a load one field too long faults.
@@ -27,7 +28,10 @@ class GuardedRecords {
     void* p = mmap(nullptr, size_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED) throw std::runtime_error("mmap failed");
     base_ = static_cast<std::byte*>(p);
-    if (mprotect(base_ + size_ - page, page, PROT_NONE) != 0) throw std::runtime_error("mprotect failed");
+    if (mprotect(base_ + size_ - page, page, PROT_NONE) != 0) {
+      munmap(base_, size_);
+      throw std::runtime_error("mprotect failed");
+    }
     records_ = reinterpret_cast<WindowVertex*>(base_ + size_ - page - bytes);
   }
   ~GuardedRecords() { munmap(base_, size_); }
