@@ -247,6 +247,15 @@ inline void rasterize_block_masks(const TriangleSetup& t, int32_t x0, int32_t y0
 // two, those back ends took 14.4–15.2 and 15.3–17.3 ms, with one 12.5–12.7 and 13.2–13.4 ms. Tried and dropped: a
 // fixed count of rows per segment (no branch on the box's height either), measured on the AVX-512 path while
 // narrow triangles still took two rows a step: the dragon's back end 15.5 → 18.3 ms.
+//
+// Only short ones, at most kNarrowMaxRows rows within the tile, take this path: a taller one (in practice a large
+// triangle's sliver at a tile's left or right edge) goes through rasterize_blocks, whose hierarchical depth skips
+// hidden blocks and whose AVX-512 form takes two rows a step. Measured on the same machine, 2 threads, without
+// llvmpipe (2026-11-30, two rounds, alternating, same maps): the back end of 2·10^4 triangles of ~2,000 px
+// 8.08–8.14 → 7.46–7.48 ms on the AVX-512 path and 8.95 → 8.46–8.52 ms on the AVX2 path; the dragon's and the
+// 10^6 small triangles' unchanged within the noise. With 8 rows the dragon's back end lost 20 % (10.3 → 12.3 ms);
+// 24 and 32 measured like 16 on the large triangles.
+inline constexpr int kNarrowMaxRows = 16;
 template <class Tri, class Stage>
 inline void rasterize_narrow(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const Stage& stage) {
   static_assert(Stage::kRows == 1, "narrow triangles take one row a step (the stage's one_row())");
@@ -268,8 +277,8 @@ inline void rasterize_narrow(const Tri& t, int32_t x0, int32_t y0, int32_t x1, i
 // A row stage (depth-only) has kRows, columns(t, x), cursor(x, y) / next_rows(cursor), rows(columns, cursor,
 // mask, BlockMax&), hiz_plane / hidden_blocks / block_done around each block (hierarchical depth), and one_row()
 // (the same stage with kRows 1), and gets one segment of 8 pixels by kRows rows at a time; narrow triangles (at
-// most 8 pixels wide within `r`) take one segment column placed inside the tile, one row at a time, others go
-// through 8×8 blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks. A row
+// most 8 pixels wide and kNarrowMaxRows high within `r`) take one segment column placed inside the tile, one row
+// at a time, others go through 8×8 blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks. A row
 // stage takes either record (TriangleSetup or DepthSetup), a block stage a TriangleSetup.
 template <class Tri, class Stage>
 inline void rasterize(const Tri& t, const PixelRect& r, const Stage& stage) {
@@ -278,7 +287,7 @@ inline void rasterize(const Tri& t, const PixelRect& r, const Stage& stage) {
   const int32_t y0 = std::max<int32_t>(t.min_y, r.y0), y1 = std::min<int32_t>(t.max_y, r.y1);
   if (x0 > x1 || y0 > y1) return;
   if constexpr (kRowStage) {
-    if (x1 - x0 < kBlockSize && is_narrow(t)) {
+    if (x1 - x0 < kBlockSize && y1 - y0 < kNarrowMaxRows && is_narrow(t)) {
       rasterize_narrow(t, x0, y0, x1, y1, stage.one_row());
       return;
     }

@@ -4,7 +4,8 @@
 // without depth writes, on rectangles that start and end on odd rows (pairs with one row outside). The one-row
 // form goes through rasterize(), which sends narrow triangles down the narrow path (rasterize_narrow, one row a
 // step in every build); the two-row form walks every triangle's blocks (rasterize_blocks), narrow ones too, so
-// the narrow path is held to the block walk as well. And the hierarchical bounds each form keeps over the draw
+// the narrow path is held to the block walk as well; slivers higher than kNarrowMaxRows, which rasterize() sends
+// to the block walk, are drawn too. And the hierarchical bounds each form keeps over the draw
 // stay at or above every block's content. Here the sixteen lanes are two halves unless the build is the AVX-512
 // one; the instruction-set test (tests/cli/isa_dispatch_test.cpp) compares the 512-bit form where the CPU has it.
 #include <gtest/gtest.h>
@@ -41,6 +42,9 @@ void fill_random(DepthTarget& d, std::mt19937& rng) {
 
 struct Counts {
   size_t differ = 0, changed = 0, low_bounds = 0;
+  // Boxes (a triangle's within one tile's rectangle) at most 8 pixels wide, at most kNarrowMaxRows high (the
+  // narrow path) and higher (rasterize() sends those through the block walk): both must occur.
+  size_t short_narrow = 0, tall_narrow = 0;
 };
 
 // The blocks of `d` whose hierarchical bound in `tiles` (one TileHiZ per tile, row-major) is below the block's
@@ -89,8 +93,11 @@ Counts draw_both(Compare compare, unsigned seed, int n) {
         hiz1[size_t(ty) * size_t(tiles_x) + size_t(tx)].load(one, tx << kTileSizeLog2, ty << kTileSizeLog2);
         hiz2[size_t(ty) * size_t(tiles_x) + size_t(tx)].load(two, tx << kTileSizeLog2, ty << kTileSizeLog2);
       }
+  Counts c;
   std::uniform_int_distribution<int32_t> pos(-16 * kSubpixelScale, (W + 16) * kSubpixelScale);
   std::uniform_int_distribution<int32_t> small(1, 12 * kSubpixelScale), large(1, 260 * kSubpixelScale);
+  // Slivers: up to 8 pixels wide and 10 to 70 high, on both sides of kNarrowMaxRows.
+  std::uniform_int_distribution<int32_t> thin(1, 8 * kSubpixelScale), tall(10 * kSubpixelScale, 70 * kSubpixelScale);
   std::uniform_real_distribution<float> z(-0.2f, 1.2f);
   std::uniform_int_distribution<int> edge(0, 5);
   for (int i = 0; i < n; ++i) {
@@ -99,9 +106,11 @@ Counts draw_both(Compare compare, unsigned seed, int n) {
     const SetupParams sp = make_setup_params(s, W, H, F);
     std::uniform_int_distribution<int32_t>& reach = i % 4 == 0 ? large : small;
     const int32_t x = pos(rng), y = pos(rng);
-    const WindowVertex v[3] = {rtest::snapped_vertex(x, y, z(rng)),
-                               rtest::snapped_vertex(x + reach(rng), y + reach(rng) / 3, z(rng)),
-                               rtest::snapped_vertex(x + reach(rng) / 4, y + reach(rng), z(rng))};
+    const bool sliver = i % 4 == 2;
+    const int32_t dx1 = sliver ? thin(rng) : reach(rng), dy1 = sliver ? tall(rng) / 3 : reach(rng) / 3;
+    const int32_t dx2 = sliver ? thin(rng) / 2 : reach(rng) / 4, dy2 = sliver ? tall(rng) : reach(rng);
+    const WindowVertex v[3] = {rtest::snapped_vertex(x, y, z(rng)), rtest::snapped_vertex(x + dx1, y + dy1, z(rng)),
+                               rtest::snapped_vertex(x + dx2, y + dy2, z(rng))};
     TriangleSetup t{};
     if (setup_triangle(v[0], v[1], v[2], sp, t) != SetupResult::visible &&
         setup_triangle(v[0], v[2], v[1], sp, t) != SetupResult::visible)
@@ -115,11 +124,13 @@ Counts draw_both(Compare compare, unsigned seed, int n) {
         const PixelRect r{tx0 + ex0, ty0 + ey0, std::min(tx0 + kTileSize - 1 - ex1, W - 1),
                           std::min(ty0 + kTileSize - 1 - ey1, H - 1)};
         const size_t tile = size_t(ty) * size_t(tiles_x) + size_t(tx);
+        const int32_t bw = std::min<int32_t>(t.max_x, r.x1) - std::max<int32_t>(t.min_x, r.x0);
+        const int32_t bh = std::min<int32_t>(t.max_y, r.y1) - std::max<int32_t>(t.min_y, r.y0);
+        if (bw >= 0 && bw < kBlockSize && bh >= 0) (bh < kNarrowMaxRows ? c.short_narrow : c.tall_narrow)++;
         rasterize(t, r, Stage1{&one, &hiz1[tile], compare});
         rasterize_blocks_only(t, r, Stage2{&two, &hiz2[tile], compare});
       }
   }
-  Counts c;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       c.differ += one.raw(x, y) != two.raw(x, y);
@@ -145,6 +156,8 @@ void check_format(const char* name) {
   EXPECT_EQ(c.differ, 0u) << f << " LESS";
   EXPECT_EQ(c.low_bounds, 0u) << f << " LESS";
   EXPECT_GT(c.changed, size_t(W) * H / 4) << f << " LESS";
+  EXPECT_GT(c.short_narrow, 50u) << f << " LESS";  // the narrow path against the block walk
+  EXPECT_GT(c.tall_narrow, 50u) << f << " LESS";   // slivers rasterize() sends to the block walk
   c = draw_both<F, FixedDepthFunc<DepthFunc::lequal>, true>({}, 2, 600);
   EXPECT_EQ(c.differ, 0u) << f << " LEQUAL";
   EXPECT_EQ(c.low_bounds, 0u) << f << " LEQUAL";
