@@ -250,11 +250,11 @@ inline void rasterize_block_masks(const TriangleSetup& t, int32_t x0, int32_t y0
 //
 // Only short ones, at most kNarrowMaxRows rows within the tile, take this path: a taller one (in practice a large
 // triangle's sliver at a tile's left or right edge) goes through rasterize_blocks, whose hierarchical depth skips
-// hidden blocks and whose AVX-512 form takes two rows a step. Measured on the same machine, 2 threads, without
-// llvmpipe (2026-11-30, two rounds, alternating, same maps): the back end of 2·10^4 triangles of ~2,000 px
-// 8.08–8.14 → 7.46–7.48 ms on the AVX-512 path and 8.95 → 8.46–8.52 ms on the AVX2 path; the dragon's and the
-// 10^6 small triangles' unchanged within the noise. With 8 rows the dragon's back end lost 20 % (10.3 → 12.3 ms);
-// 24 and 32 measured like 16 on the large triangles.
+// hidden blocks and whose AVX-512 form takes two rows a step. Measured on a 2-core AMD EPYC of the Zen 4
+// generation (family 25), 2 threads, without llvmpipe (2026-11-30, two rounds, alternating, same maps): the back
+// end of 2·10^4 triangles of ~2,000 px 8.08–8.14 → 7.46–7.48 ms on the AVX-512 path and 8.95 → 8.46–8.52 ms on
+// the AVX2 path; the dragon's and the 10^6 small triangles' unchanged within the noise. With 8 rows the dragon's
+// back end lost 20 % (10.3 → 12.3 ms); 24 and 32 measured like 16 on the large triangles.
 inline constexpr int kNarrowMaxRows = 16;
 template <class Tri, class Stage>
 inline void rasterize_narrow(const Tri& t, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const Stage& stage) {
