@@ -11,7 +11,7 @@ void Renderer::clear_tiles(DepthTarget& depth, uint32_t raw) {
   const TileGrid grid = TileGrid::for_size(depth.width(), depth.height());
   pool_.parallel_for(size_t(grid.count()), [&](size_t k) {
     const int tx = int(k % size_t(grid.tiles_x)), ty = int(k / size_t(grid.tiles_x));
-    depth.fill(raw, tx << kTileSizeLog2, ty << kTileSizeLog2, kTileSize, kTileSize);
+    depth.fill_tile(raw, tx, ty);
   });
 }
 

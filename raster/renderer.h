@@ -440,7 +440,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   bool tiles_ran = false;
   auto clear_tile = [&](int tx, int ty) {
     const auto c0 = Clock::now();
-    targets.depth->fill(*clear_raw, tx << kTileSizeLog2, ty << kTileSizeLog2, kTileSize, kTileSize);
+    targets.depth->fill_tile(*clear_raw, tx, ty);
     clear_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - c0).count(),
                        std::memory_order_relaxed);
   };

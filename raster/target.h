@@ -1,6 +1,7 @@
 // Render targets: the depth and colour buffers a draw writes and a shader may later sample without copying.
 // Memory is row-major with row 0 at the bottom (window y = 0, texture t = 0), rows padded to a multiple of the
-// tile size so that tile execution can work on whole aligned 8-pixel rows.
+// tile size so that tile execution can work on whole aligned 8-pixel rows, plus one cache line (target.cpp,
+// row_pitch: the rows of a tile then fall into different L1 sets).
 #pragma once
 #include <algorithm>
 #include <atomic>
@@ -83,6 +84,9 @@ class DepthTarget {
   std::optional<uint32_t> take_pending_clear();
   // Writes the stored value `raw` into the texels [x0, x0 + w) × [y0, y0 + h) (a tile of the padded target).
   void fill(uint32_t raw, int x0, int y0, int w, int h);
+  // fill() over tile (tx, ty) of the padded target (TileGrid's numbering); a tile of the rightmost column also
+  // takes the rest of its rows (the pitch's extra cache line), so clearing every tile clears every texel.
+  void fill_tile(uint32_t raw, int tx, int ty);
 
   // The stored value at pixel (x, y) (y = 0 is the bottom row) as a float in [0, 1]: code / max code for the
   // unorm formats, the float itself for d32f.

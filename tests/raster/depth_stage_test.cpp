@@ -52,7 +52,7 @@ struct Counts {
 size_t bounds_below_content(const DepthTarget& d, const std::vector<TileHiZ>& tiles, int tiles_x) {
   size_t low = 0;
   for (int by = 0; by < d.padded_height(); by += kBlockSize)
-    for (int bx = 0; bx < d.pitch(); bx += kBlockSize) {
+    for (int bx = 0; bx < tiles_x << kTileSizeLog2; bx += kBlockSize) {  // the tiles' columns, not the row's end
       float m = 0.0f;
       for (int r = 0; r < kBlockSize; ++r)
         for (int l = 0; l < kBlockSize; ++l) m = std::max(m, d.row<float>(by + r)[bx + l]);
@@ -85,7 +85,7 @@ Counts draw_both(Compare compare, unsigned seed, int n) {
   static_assert(Stage1::kHiZ == Stage2::kHiZ);
   // One hierarchical bound per tile for each form, kept from triangle to triangle as the renderer keeps it over a
   // draw, so the bounds each form leaves behind decide what the next triangles skip.
-  const int tiles_x = one.pitch() >> kTileSizeLog2, tiles_y = one.padded_height() >> kTileSizeLog2;
+  const int tiles_x = (W + kTileSize - 1) >> kTileSizeLog2, tiles_y = one.padded_height() >> kTileSizeLog2;
   std::vector<TileHiZ> hiz1(size_t(tiles_x) * size_t(tiles_y)), hiz2(hiz1.size());
   if constexpr (Stage1::kHiZ)
     for (int ty = 0; ty < tiles_y; ++ty)

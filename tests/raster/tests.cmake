@@ -11,6 +11,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/depth_setup_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/quad_pair_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/clear_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/target_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/bins_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/hiz_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/srgb8_test.cpp
