@@ -278,8 +278,8 @@ inline void rasterize_narrow(const Tri& t, int32_t x0, int32_t y0, int32_t x1, i
 // mask, BlockMax&), hiz_plane / hidden_blocks / block_done around each block (hierarchical depth), and one_row()
 // (the same stage with kRows 1), and gets one segment of 8 pixels by kRows rows at a time; narrow triangles (at
 // most 8 pixels wide and kNarrowMaxRows high within `r`) take one segment column placed inside the tile, one row
-// at a time, others go through 8×8 blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets whole blocks. A row
-// stage takes either record (TriangleSetup or DepthSetup), a block stage a TriangleSetup.
+// at a time, others go through 8×8 blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets
+// whole blocks. A row stage takes either record (TriangleSetup or DepthSetup), a block stage a TriangleSetup.
 template <class Tri, class Stage>
 inline void rasterize(const Tri& t, const PixelRect& r, const Stage& stage) {
   constexpr bool kRowStage = requires { stage.columns(t, 0); };

@@ -55,13 +55,14 @@ int round_up(int v, int m) { return (v + m - 1) / m * m; }
 // is an even number of lines (a power of two of them at widths such as 1024 or 2048), so the rows of a tile fall
 // into the same few sets of a 64-set L1 cache and evict one another while tile execution walks down them. With
 // an odd number of lines per row, 64 consecutive rows start in 64 different sets. Measured on the 2-core AMD EPYC
-// of the Zen 4 generation (2026-11-30, AVX-512 path, 2 threads, without llvmpipe, three rounds alternating): the
-// depth-only back end of the dragon's 871k triangles into a 2048² d32f map 10.26–10.35 → 9.00–9.02 ms, of 10^6
-// small triangles 9.53–9.61 → 9.06–9.10 ms, of 2·10^4 large ones 7.46–7.49 → 7.27–7.36 ms; the one-lookup PCF
-// pass sampling such a map 2.13–2.24 → 1.99–2.12 ms, 16 Poisson taps unchanged (19.0–19.2 ms). (An earlier test
-// of this padding, with older kernels on a noisier day, saw the Poisson pass slower; not reproduced here.)
+// of the Zen 4 generation (2026-11-30, AVX-512 path, 2 threads, without llvmpipe, seven rounds alternating, a
+// noisy hour): the depth-only back end of the dragon's 871k triangles into a 2048² d32f map 10.31–10.88 → 9.03–10.25
+// ms (medians 10.67 → 9.31), of 10^6 small triangles 9.79 → 9.33 ms (medians), of 2·10^4 large ones unchanged; the
+// one-lookup PCF pass sampling such a map 2.20–2.25 → 2.09–2.13 ms, 16 Poisson taps unchanged (19.1–19.4 ms); the
+// blur of the filterable maps (bench/blur_bench.cpp) 24.0–24.2 → 21.8–22.2 ms per core. (A 2026-11-28 test of
+// this padding, with older kernels on a noisier day, saw the Poisson pass slower; not reproduced here.)
 int row_pitch(int width, size_t bytes_per_texel) {
-  constexpr size_t kLine = 64;
+  constexpr size_t kLine = 64;  // texels are 2, 4, 8 or 16 bytes: each divides a line
   static_assert(kTileSize * 2 % kLine == 0, "a tile-multiple row of the narrowest texels is whole lines");
   return round_up(width, kTileSize) + int(kLine / bytes_per_texel);
 }
