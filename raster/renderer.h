@@ -152,6 +152,9 @@ inline constexpr size_t kBinPrefetch = 8;
 // places ahead 9.00–9.08 ms, 32 and 64 like 16. Draws whose chunks shade their own vertices (soups) do not ask:
 // theirs are in the chunk's small buffers, and asking cost the 10^6 small triangles' front end about 5 %.
 inline constexpr size_t kVertexPrefetch = 16;
+// Asks for the cache line holding `address`, given as an integer: the address may lie past any array (a prefetch
+// never faults), where forming a pointer to it would not be allowed.
+inline void prefetch_address(uintptr_t address) { __builtin_prefetch(reinterpret_cast<const void*>(address), 0, 3); }
 
 inline size_t chunk_triangles(size_t ntri, int threads) {
   const size_t chunks = kChunksPerWorker * size_t(std::max(threads, 1));
@@ -319,6 +322,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     const bool batched = !kShaded && nv <= kBatchMaxVertices;
     // The whole draw's vertex arrays, read at the mesh's indices: asked for ahead (see kVertexPrefetch).
     const bool prefetch_vertices = !in_range && !indices.empty();
+    const uintptr_t win_at = reinterpret_cast<uintptr_t>(win), codes_at = reinterpret_cast<uintptr_t>(codes);
     SetupBatch batch(sp, win);
     auto take = [&](SetupResult r, const auto& t) {
       if (count(r)) keep(t);
@@ -331,13 +335,12 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       if constexpr (!kShaded) {
         if (batched && i >= one_by_one_until && end - i >= 8) {
           if (prefetch_vertices && end - i >= detail::kVertexPrefetch + 8) {
-            // Integer addresses: an index not yet checked against nv may point anywhere (a prefetch never faults).
+            // Integer addresses: an index not yet checked against nv may point anywhere.
             const uint32_t* ahead = indices.data() + 3 * (i + detail::kVertexPrefetch);
-            const uintptr_t win_at = reinterpret_cast<uintptr_t>(win), codes_at = reinterpret_cast<uintptr_t>(codes);
             for (int k = 0; k < 24; ++k) {
               const uintptr_t v = ahead[k] - base;
-              __builtin_prefetch(reinterpret_cast<const void*>(win_at + v * sizeof(WindowVertex)), 0, 3);
-              __builtin_prefetch(reinterpret_cast<const void*>(codes_at + v * sizeof(unsigned)), 0, 3);
+              detail::prefetch_address(win_at + v * sizeof(WindowVertex));
+              detail::prefetch_address(codes_at + v * sizeof(unsigned));
             }
           }
           TriangleGroup g;
@@ -509,11 +512,9 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
           const ChunkBins<Record>& bins = bins_of(ch);
           const uint32_t b = bins.offsets[tile], e = bins.offsets[tile + 1];
           for (uint32_t i = b; i < e; ++i) {
-            // The record kBinPrefetch ahead is asked for now (see kBinPrefetch); past the slice's end too, as
-            // an integer address (a prefetch never faults).
-            __builtin_prefetch(reinterpret_cast<const void*>(reinterpret_cast<uintptr_t>(bins.binned.data() + i) +
-                                                             detail::kBinPrefetch * sizeof(Record)),
-                               0, 3);
+            // The record kBinPrefetch ahead is asked for now (see kBinPrefetch), past the slice's end too.
+            detail::prefetch_address(reinterpret_cast<uintptr_t>(bins.binned.data() + i) +
+                                     detail::kBinPrefetch * sizeof(Record));
             const Record& t = bins.binned[i];
             if constexpr (kShaded) rasterize(t, rect, stage);
             else if (t.full == kNoFullSetup) rasterize(t, rect, stage);
