@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "raster/simd/vec.h"
+#include "shading/mip_chain.h"
 #include "shading/pcf_kernel.h"
 #include "shading/texel_format.h"
 #include "shading/texture.h"
@@ -31,12 +32,12 @@ struct Pcf16Level {
   __m512i w2, h2;      // width − 2, height − 2
   __m512i vpitch;      // 32-bit texels from one row to the next
   __m512i vpitch16;    // 16-bit texels from one row to the next
-  __m512i w8, h4;      // width − 8, height − 4: the last column / row a window (window_fits16) can start at
+  __m512i wh;          // (width − 8, height − 4) as 16-bit halves: the last column and row a window can start at
   explicit Pcf16Level(const TextureLevel& L)
       : half(L), fwidth(_mm512_set1_ps(L.fwidth)), fheight(_mm512_set1_ps(L.fheight)),
         w2(_mm512_set1_epi32(L.width - 2)), h2(_mm512_set1_epi32(L.height - 2)),
         vpitch(_mm512_set1_epi32(int(L.row_bytes / 4))), vpitch16(_mm512_set1_epi32(int(L.row_bytes / 2))),
-        w8(_mm512_set1_epi32(L.width - 8)), h4(_mm512_set1_epi32(L.height - 4)) {}
+        wh(_mm512_set1_epi32(int32_t(uint32_t(L.height - 4) << 16 | (uint32_t(L.width - 8) & 0xFFFFu)))) {}
 #else
   explicit Pcf16Level(const TextureLevel& L) : half(L) {}
 #endif
@@ -97,13 +98,13 @@ inline void load_pairs16(const Pcf16Level& L, __m512i offv, __m512 tex[4]) {
   }
 }
 
-// Each lane: the minimum of its group of eight lanes (0–7 or 8–15).
-inline __m512i group_min8(__m512i v) {
+// Each 16-bit half of each lane: the minimum of that half over its group of eight lanes (0–7 or 8–15), unsigned.
+inline __m512i group_min8_u16(__m512i v) {
   // Swap the 128-bit blocks within each 256-bit half, then the 64-bit pairs, then neighbouring lanes.
   constexpr auto kPairs = _MM_PERM_ENUM(_MM_SHUFFLE(1, 0, 3, 2)), kLanes = _MM_PERM_ENUM(_MM_SHUFFLE(2, 3, 0, 1));
-  v = _mm512_maskz_min_epi32(kAll16, v, _mm512_maskz_shuffle_i64x2(0xFF, v, v, _MM_SHUFFLE(2, 3, 0, 1)));
-  v = _mm512_maskz_min_epi32(kAll16, v, _mm512_maskz_shuffle_epi32(kAll16, v, kPairs));
-  return _mm512_maskz_min_epi32(kAll16, v, _mm512_maskz_shuffle_epi32(kAll16, v, kLanes));
+  v = _mm512_min_epu16(v, _mm512_maskz_shuffle_i64x2(0xFF, v, v, _MM_SHUFFLE(2, 3, 0, 1)));
+  v = _mm512_min_epu16(v, _mm512_maskz_shuffle_epi32(kAll16, v, kPairs));
+  return _mm512_min_epu16(v, _mm512_maskz_shuffle_epi32(kAll16, v, kLanes));
 }
 
 // The window path. A camera pass's sixteen-lane lookup is one tap at a fragment pair's eight points in each group of
@@ -111,34 +112,46 @@ inline __m512i group_min8(__m512i v) {
 // every group's footprints (columns i0 .. i0 + 1, rows j0 .. j0 + 1) lie within the 8 × 4 texels from the group's
 // smallest i0 and j0, and that window lies inside the map, window_taps16 reads it as four 8-texel rows per group and
 // picks each tap with permutes across two registers, instead of 32 scalar loads, their offsets moved to general
-// registers and the vector inserts. window_fits16 returns the lanes that fit (the lookup takes the window path only
-// when all do), each lane's index in its group's window (dy · 8 + dx), and the window's first texel as an element
-// offset in texels of the format (read from lanes 0 and 8). It means something only where every lane's i0, j0 lies
-// inside the map (0 <= i0 <= W − 2, 0 <= j0 <= H − 2, so no minimum is below 0): pcf_lequal_gather16 tests that first,
+// registers and the vector inserts. window_fits16 says whether every lane fits, and gives each lane's index in its
+// group's window (dy · 8 + dx in the index's low five bits, all that the permutes read) and each group's first
+// texel as an element offset in texels of the format. It means something only where every lane's i0, j0 lies inside
+// the map (0 <= i0 <= W − 2, 0 <= j0 <= H − 2, so no minimum is below 0): pcf_lequal_gather16 tests that first,
 // pcf_lequal_gather16_n discards the result otherwise. The taps are the same texels as load_pairs16's, so the results
-// are the same bits. Measured on the 2-core AMD EPYC (Zen 5), 2 threads, the PCF bench's Poisson pass (16 taps,
-// 1920×1080 into a 2048² d32f map, three runs each, alternating): 17.0 → 16.0 ms on its own, and the rest with
-// pcf_lequal_gather16_n (below). For the eight-lane lookups of one PCF tap per pixel the same window (one group, four
-// permutes) measured slower, 2.5 → 3.0 ms (four runs each): there no other lookup hides the longer chain before the
-// loads (a minimum across lanes, then a scalar address), so pcf_lequal_gather8 keeps its pairs.
+// are the same bits. The column and row of each lane travel as the two 16-bit halves of one lane (textures have at
+// most kMaxTextureSize texels a side), so one minimum across the group serves both, and the differences, the bounds
+// and the window's corners are taken on both at once (the corners then in general registers, without a vector
+// multiply): on the 2-core AMD EPYC (Zen 4), 2 threads, the PCF bench's Poisson pass went from 19.3–19.5 to 17.5–18.1
+// ms (three runs each, alternating) against one minimum per coordinate. Measured on the 2-core AMD EPYC (Zen 5), the
+// window path itself: 17.0 → 16.0 ms on its own, and the rest with pcf_lequal_gather16_n (below). For the eight-lane
+// lookups of one PCF tap per pixel the same window (one group, four permutes) measured slower, 2.5 → 3.0 ms (four
+// runs each): there no other lookup hides the longer chain before the loads (a minimum across lanes, then a scalar
+// address), so pcf_lequal_gather8 keeps its pairs.
+static_assert(kMaxTextureSize <= 32768, "a texel column or row fits 16 bits (unsigned), a window's corner 15");
+struct Window16 {
+  __m512i idx;
+  ptrdiff_t corner[2];  // groups 0 and 1
+};
 template <TexelFormat F>
-inline __mmask16 window_fits16(const Pcf16Level& L, __m512i i0, __m512i j0, __m512i& idx, __m512i& corner) {
-  const __m512i x0 = group_min8(i0), y0 = group_min8(j0);
-  const __m512i dx = _mm512_sub_epi32(i0, x0), dy = _mm512_sub_epi32(j0, y0);
-  __mmask16 ok = _mm512_cmple_epu32_mask(dx, _mm512_set1_epi32(6));  // x1 = x0 + dx + 1 within 8 columns
-  ok = _mm512_mask_cmple_epu32_mask(ok, dy, _mm512_set1_epi32(2));     // y1 within 4 rows
-  ok = _mm512_mask_cmple_epi32_mask(ok, x0, L.w8);                     // the window inside the map
-  ok = _mm512_mask_cmple_epi32_mask(ok, y0, L.h4);
-  idx = _mm512_add_epi32(_mm512_maskz_slli_epi32(kAll16, dy, 3), dx);
-  corner = _mm512_add_epi32(_mm512_mullo_epi32(y0, F == TexelFormat::d16 ? L.vpitch16 : L.vpitch), x0);
-  return ok;
+inline bool window_fits16(const Pcf16Level& L, __m512i i0, __m512i j0, Window16& w) {
+  const __m512i ij = _mm512_or_si512(i0, _mm512_maskz_slli_epi32(kAll16, j0, 16));  // (i0, j0) as 16-bit halves
+  const __m512i m = group_min8_u16(ij);                                             // (x0, y0)
+  const __m512i d = _mm512_sub_epi16(ij, m);                                        // (dx, dy)
+  // x1 = x0 + dx + 1 within 8 columns, y1 = y0 + dy + 1 within 4 rows, and the window inside the map (signed: a map
+  // narrower than 8 or lower than 4 texels has a negative limit).
+  const __mmask32 ok = _mm512_cmple_epu16_mask(d, _mm512_set1_epi32(2 << 16 | 6)) & _mm512_cmple_epi16_mask(m, L.wh);
+  w.idx = _mm512_add_epi32(d, _mm512_maskz_srli_epi32(kAll16, d, 13));  // dx + 8 · dy in the low bits
+  const ptrdiff_t P = F == TexelFormat::d16 ? ptrdiff_t(L.half.level.row_bytes / 2) : L.half.pitch;
+  const uint32_t m0 = uint32_t(_mm512_cvtsi512_si32(m));
+  const uint32_t m8 = uint32_t(_mm_cvtsi128_si32(_mm512_maskz_extracti32x4_epi32(0xF, m, 2)));
+  w.corner[0] = ptrdiff_t(m0 & 0xFFFF) + ptrdiff_t(m0 >> 16) * P;
+  w.corner[1] = ptrdiff_t(m8 & 0xFFFF) + ptrdiff_t(m8 >> 16) * P;
+  return ok == 0xFFFFFFFFu;
 }
 // The four taps from each group's window (see window_fits16), as load_pairs16 returns them: d16 decoded, d24 as
 // raw bits, d32f as they are.
 template <TexelFormat F>
-inline void window_taps16(const Pcf16Level& L, __m512i idx, __m512i corner, __m512 tex[4]) {
-  const ptrdiff_t c0 = _mm512_cvtsi512_si32(corner);
-  const ptrdiff_t c8 = _mm_cvtsi128_si32(_mm512_maskz_extracti32x4_epi32(0xF, corner, 2));
+inline void window_taps16(const Pcf16Level& L, const Window16& w, __m512 tex[4]) {
+  const ptrdiff_t c0 = w.corner[0], c8 = w.corner[1];
   __m512 a01, a23, b01, b23;  // group 0's rows 0–1 and 2–3 (8 texels each), then group 1's
   if constexpr (F == TexelFormat::d16) {
     // Rows of 8 codes (16 bytes each), two rows widened to the 32-bit lanes of one register.
@@ -161,7 +174,7 @@ inline void window_taps16(const Pcf16Level& L, __m512i idx, __m512i corner, __m5
   }
   constexpr int kStep[4] = {0, 1, 8, 9};  // (x0, y0), (x1, y0), (x0, y1), (x1, y1) from (x0, y0)
   for (int k = 0; k < 4; ++k) {
-    const __m512i ik = _mm512_add_epi32(idx, _mm512_set1_epi32(kStep[k]));
+    const __m512i ik = _mm512_add_epi32(w.idx, _mm512_set1_epi32(kStep[k]));
     tex[k] = _mm512_mask_blend_ps(0xFF00, _mm512_maskz_permutex2var_ps(kAll16, a01, ik, a23),
                                   _mm512_maskz_permutex2var_ps(kAll16, b01, ik, b23));
     if constexpr (F == TexelFormat::d16) tex[k] = decode_d16x16(_mm512_castps_si512(tex[k]));
@@ -235,9 +248,9 @@ inline __m512 pcf_lequal_gather16(const Pcf16Level& L, __m512 s, __m512 t, __m51
   if (c.outside(L) != 0) [[unlikely]]
     return halves();
   __m512 tex[4];
-  __m512i idx, corner;
-  if (window_fits16<F>(L, c.i0, c.j0, idx, corner) == kAll16)
-    window_taps16<F>(L, idx, corner, tex);
+  Window16 w;
+  if (window_fits16<F>(L, c.i0, c.j0, w))
+    window_taps16<F>(L, w, tex);
   else
     load_pairs16<F>(L, _mm512_add_epi32(_mm512_mullo_epi32(c.j0, F == TexelFormat::d16 ? L.vpitch16 : L.vpitch), c.i0),
                     tex);
@@ -259,24 +272,25 @@ template <TexelFormat F, bool kBorderWrap, int N>
 [[gnu::noinline]] void pcf_lequal_gather16_n(const Pcf16Level& L, const __m512* s, const __m512* t,
                                              const __m512* ref, __m512* out, float border_depth) {
   static_assert(F == TexelFormat::d16 || F == TexelFormat::d24 || F == TexelFormat::d32f);
-  __mmask16 fits = L.half.tiny ? 0 : kAll16;
+  __mmask16 inside = L.half.tiny ? 0 : kAll16;
   Coords16 c[N];
-  __m512i idx[N], corner[N];
+  Window16 w[N];
 #pragma GCC unroll 8
   for (int n = 0; n < N; ++n) {
     c[n] = Coords16(L, s[n], t[n]);
-    fits &= ~c[n].outside(L);
+    inside &= ~c[n].outside(L);
   }
+  bool fits = true;
 #pragma GCC unroll 8
-  for (int n = 0; n < N; ++n) fits &= window_fits16<F>(L, c[n].i0, c[n].j0, idx[n], corner[n]);
-  if (fits != kAll16) [[unlikely]] {
+  for (int n = 0; n < N; ++n) fits &= window_fits16<F>(L, c[n].i0, c[n].j0, w[n]);
+  if (!(fits && inside == kAll16)) [[unlikely]] {
     for (int n = 0; n < N; ++n) out[n] = pcf_lequal_gather16<F, kBorderWrap>(L, s[n], t[n], ref[n], border_depth);
     return;
   }
 #pragma GCC unroll 8
   for (int n = 0; n < N; ++n) {
     __m512 tex[4];
-    window_taps16<F>(L, idx[n], corner[n], tex);
+    window_taps16<F>(L, w[n], tex);
     out[n] = compare_blend16<F>(ref[n], tex, c[n].u, c[n].fu, c[n].v, c[n].fv);
   }
 }
