@@ -256,14 +256,21 @@ inline void store_interleaved6(void* dst, VecF32 f0, VecF32 f1, VecF32 f2, VecF3
   _mm256_storeu_ps(out + 40, _mm256_permute2f128_ps(x4, x5, 0x31));
 }
 
-// ---- For the binning of large draws (bins.h). One 64-byte record, 32-byte aligned at both ends, copied with
+// ---- For the binning of large draws (bins.h). One 64-byte record, 64-byte aligned at both ends, copied with
 // non-temporal stores: the line goes to memory without being read first (no read for ownership) and without
 // evicting what the caches hold. Such stores are weakly ordered: stream_fence() before another thread reads them.
+// AVX-512 builds write the line with one store: measured on the 2-core AMD EPYC (Zen 4), 2 threads, shadowlab
+// alone, four rounds alternating, the dragon's front end (bench/depth_pass_bench.cpp) 8.7–9.5 → 8.5–8.6 ms
+// against two 32-byte halves.
 inline void stream_line(void* dst, const void* src) {
+#if defined(SHADOWLAB_SIMD_AVX512)
+  _mm512_stream_si512(static_cast<__m512i*>(dst), _mm512_load_si512(src));
+#else
   const __m256i* s = static_cast<const __m256i*>(src);
   __m256i* d = static_cast<__m256i*>(dst);
   _mm256_stream_si256(d, _mm256_load_si256(s));
   _mm256_stream_si256(d + 1, _mm256_load_si256(s + 1));
+#endif
 }
 inline void stream_fence() { _mm_sfence(); }
 

@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <string>
@@ -112,6 +113,29 @@ TEST(CliIsa, UnknownPathIsRefusedInOneLine) {
 // PCF and Poisson lookups, the directional family, the filterable maps' encode, blur and mip passes, PCSS,
 // point and hemispherical lights, projective textures and the irregular z-buffer. Each writes the frame, its
 // per-pixel channels (floats: no 8-bit rounding hides a difference) and every shadow map.
+// A sphere of 24,320 triangles over a plane: its shadow map's draw is large enough (renderer.h, kStreamBinsBytes) to
+// bin its records with non-temporal stores (simd::stream_line, one 64-byte store with AVX-512, two 32-byte halves
+// with AVX2, a plain copy in the scalar set), which the built-in scenes are too small to reach.
+fs::path dense_scene() {
+  const fs::path path = testsupport::temp_dir("cli_isa_dense") / "dense.json";
+  std::ofstream(path) << R"({
+  "version": 1,
+  "name": "dense",
+  "materials": [{"name": "grey", "base_color": [0.7, 0.7, 0.7, 1.0]}],
+  "objects": [
+    {"name": "floor", "primitive": {"type": "plane", "size": [8.0, 8.0]}, "material": "grey"},
+    {"name": "ball", "primitive": {"type": "sphere", "radius": 1.5, "segments": 128, "rings": 96},
+     "transform": {"translate": [0.0, 1.6, 0.0]}, "material": "grey"}
+  ],
+  "cameras": [{"name": "main", "position": [0.0, 4.0, 9.0], "target": [0.0, 1.0, 0.0],
+               "perspective": {"fovy": 45.0, "near": 0.5, "far": 40.0}}],
+  "lights": [{"name": "sun", "type": "directional", "intensity": 100000.0, "direction": [-0.5, -2.0, -1.0],
+              "shadow": {"technique": "shadowmap"}}]
+}
+)";
+  return path;
+}
+
 TEST(CliIsa, EveryPathWritesTheScalarPathsBytes) {
   if (!built("scalar") || !built("avx2")) GTEST_SKIP() << "this build holds one instruction set: " SHADOWLAB_BUILT_ISAS;
   std::vector<std::string> wide;  // the sets compared with scalar: those built that this CPU runs
@@ -139,6 +163,7 @@ TEST(CliIsa, EveryPathWritesTheScalarPathsBytes) {
       "render pyramid --technique pyramid" + out,
       "render projective" + out,
       "render duel" + out,
+      "render " + dense_scene().string() + " --technique shadowmap" + out,
   };
   auto run = [&](size_t i, const std::string& isa) {
     const fs::path dir = testsupport::temp_dir("cli_isa_" + std::to_string(i) + "_" + isa);
