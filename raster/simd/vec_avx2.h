@@ -260,8 +260,8 @@ inline void store_interleaved6(void* dst, VecF32 f0, VecF32 f1, VecF32 f2, VecF3
 // non-temporal stores: the line goes to memory without being read first (no read for ownership) and without
 // evicting what the caches hold. Such stores are weakly ordered: stream_fence() before another thread reads them.
 // AVX-512 builds write the line with one store: measured on the 2-core AMD EPYC (Zen 4), 2 threads, shadowlab
-// alone, four rounds alternating, the dragon's front end (bench/depth_pass_bench.cpp) 8.7–9.5 → 8.5–8.6 ms
-// against two 32-byte halves.
+// alone, alternating with two 32-byte halves, the dragon's front end (bench/depth_pass_bench.cpp) 8.7–9.5 →
+// 8.5–8.6 ms in four rounds and 8.9–9.2 → 8.8–9.2 ms in five more (medians 9.10 → 8.92, the draw 18.30 → 18.05).
 inline void stream_line(void* dst, const void* src) {
 #if defined(SHADOWLAB_SIMD_AVX512)
   _mm512_stream_si512(static_cast<__m512i*>(dst), _mm512_load_si512(src));
