@@ -5,6 +5,7 @@
 // draws and the one-cache-line DepthSetup for depth-only draws (renderer.h).
 #pragma once
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -45,6 +46,19 @@ struct ChunkBins {
     const int k = single_tile(t, grid);
     if (k >= 0) ++offsets[size_t(k) + 1];
     else for_each_tile(t, grid, [&](int j) { ++offsets[size_t(j) + 1]; });
+  }
+
+  // add() for recs[l], for each lane l set in `lanes`, in lane order.
+  void add_lanes(const Record* recs, unsigned lanes, const TileGrid& grid) {
+    std::vector<Record>& staged = *setups_;
+    uint32_t* const counts = offsets.data() + 1;
+    for (; lanes != 0; lanes &= lanes - 1) {
+      const Record& t = recs[std::countr_zero(lanes)];
+      staged.push_back(t);
+      const int k = single_tile(t, grid);
+      if (k >= 0) ++counts[k];
+      else for_each_tile(t, grid, [&](int j) { ++counts[j]; });
+    }
   }
 
   // Sorts the staged records into per-tile slices (counting sort: the counts were taken by add(), then a prefix

@@ -117,6 +117,14 @@ class Renderer {
 
 namespace detail {
 
+// One callable made of several lambdas, each serving the calls its parameters take.
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;  // spelled out: clang 14 (the fuzzers' compiler) deduces no aggregate
+
 inline constexpr size_t kVertexBatch = 8192;
 // The front end splits a draw into chunks of consecutive triangles, at least kChunksPerWorker per worker so that
 // a draw of few (large) triangles still spreads over every worker, and no larger than kMaxChunkTriangles (the
@@ -324,9 +332,21 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     const bool prefetch_vertices = !in_range && !indices.empty();
     const uintptr_t win_at = reinterpret_cast<uintptr_t>(win), codes_at = reinterpret_cast<uintptr_t>(codes);
     SetupBatch batch(sp, win);
-    auto take = [&](SetupResult r, const auto& t) {
+    auto take_one = [&](SetupResult r, const auto& t) {
       if (count(r)) keep(t);
     };
+    // A whole batch set up in SIMD (depth-only draws): its outcomes counted at once, its visible records binned in
+    // lane order, as take_one lane by lane would (see SetupLanes).
+    auto take_lanes = [&](const SetupLanes& s) {
+      if constexpr (!kShaded) {
+        ch.stats.culled += uint64_t(std::popcount(s.culled));
+        ch.stats.degenerate += uint64_t(std::popcount(s.degenerate));
+        ch.stats.rejected += uint64_t(std::popcount(s.outside));
+        ch.stats.setups += uint64_t(std::popcount(s.visible));
+        bins.add_lanes(s.record, s.visible, grid);
+      }
+    };
+    const detail::Overloaded take{take_one, take_lanes};
     // Eight triangles at a time where they can be set up in batches: a group of triangles that are each either
     // rejected or inside the view volume goes straight to the batch; any other group (one to clip, an index out
     // of range) goes through the loop below one triangle at a time.

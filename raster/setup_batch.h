@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "raster/assembly.h"
 #include "raster/depth_setup.h"
@@ -38,6 +39,17 @@ static_assert(kBatchExtentBits <= kNarrowCoefBits, "every batched triangle is na
 static_assert(sizeof(WindowVertex) == 6 * sizeof(float) && offsetof(WindowVertex, z) == 2 * sizeof(float) &&
               offsetof(WindowVertex, sx) == 4 * sizeof(float) && offsetof(WindowVertex, sy) == 5 * sizeof(float));
 inline constexpr size_t kBatchMaxVertices = size_t(1) << 28;
+
+// A batch's outcome handed over in one call (SetupBatch::flush): lane l, for each queued lane, has exactly one bit l
+// among the four masks, and its record at record[l] when it is visible. Taking a batch this way instead of lane by
+// lane, the depth-only front end counts its outcomes once and copies its records in one loop (renderer.h): measured
+// on the 2-core AMD EPYC (Zen 4), AVX-512 path, 2 threads, shadowlab alone, five rounds alternating, the dragon's
+// front end 8.76–9.12 → 8.06–8.31 ms (the draw 17.90–18.57 → 17.23–17.51 ms) and three rounds, 10⁶ triangles of
+// ~10 px 12.83–12.94 → 11.93–12.25 ms.
+struct SetupLanes {
+  const DepthSetup* record;
+  unsigned visible, culled, degenerate, outside;
+};
 
 class SetupBatch {
  public:
@@ -74,12 +86,21 @@ class SetupBatch {
     }
   }
 
-  // Sets up whatever is queued (a partial batch before a clipped triangle, to keep submission order).
+  // Sets up whatever is queued (a partial batch before a clipped triangle, to keep submission order). A sink that
+  // also takes a SetupLanes gets a batch whose every queued lane was set up here in that one call instead.
   template <class Sink>
   void flush(Sink&& sink) {
     if (n_ == 0) return;
     for (int l = n_; l < 8; ++l) idx_[0][l] = idx_[1][l] = idx_[2][l] = idx_[0][0];  // harmless repeats
     run();
+    if constexpr (std::is_invocable_v<Sink&, const SetupLanes&>) {
+      const unsigned queued = (1u << n_) - 1u;
+      if ((simd_lanes_ & queued) == queued) {
+        sink(SetupLanes{staged_, visible_ & queued, culled_ & queued, degenerate_ & queued, outside_ & queued});
+        n_ = 0;
+        return;
+      }
+    }
     for (int l = 0; l < n_; ++l) {
       if (!(simd_lanes_ >> l & 1u)) {
         TriangleSetup t;
@@ -104,6 +125,7 @@ class SetupBatch {
   // Results of run(), lane by lane.
   unsigned simd_lanes_ = 0;  // lanes set up here; the others go through setup_triangle()
   alignas(32) int32_t result_[8];
+  unsigned visible_ = 0, culled_ = 0, degenerate_ = 0, outside_ = 0;  // result_ as lane masks
   DepthSetup staged_[8];  // lane l's record, written by two 8 × 8 transposes
 };
 
@@ -157,6 +179,10 @@ inline void SetupBatch::run() {
   result = simd::select(culled, result, VecI32::splat(int32_t(SetupResult::culled)));
   result = simd::select(degenerate, result, VecI32::splat(int32_t(SetupResult::degenerate)));
   result.store_u32(reinterpret_cast<uint32_t*>(result_));
+  degenerate_ = degenerate.bits();  // the same precedence as the selects above
+  culled_ = culled.bits() & ~degenerate_;
+  outside_ = outside.bits() & ~(culled_ | degenerate_);
+  visible_ = ~(outside_ | culled_ | degenerate_) & 0xFFu;
   VecF32 rec[16];  // the records' dwords (see the static_assert above), lane by lane
   // Visible boxes lie within [0, kMaxTargetSize − 1] (limits.h), so the int16 halves are the low bits.
   rec[9] = simd::bitcast_f32(min_x | simd::shift_left<16>(min_y));

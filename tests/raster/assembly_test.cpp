@@ -1,7 +1,8 @@
 // Primitive assembly eight triangles at a time (raster/assembly.h): each lane's vertex offsets and its outcome
 // (rejected, inside, to clip) are the one-triangle rule's, for indexed and non-indexed draws, with a base offset,
-// invalid vertices and indices out of range; and depth-only draws, whose front end takes such groups, count and
-// draw exactly as shaded draws of the same triangles, whose front end goes one triangle at a time.
+// invalid vertices and indices out of range; and depth-only draws, whose front end takes such groups and sets their
+// triangles up in batches, count and draw exactly as shaded draws of the same triangles, whose front end goes one
+// triangle at a time.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -155,5 +156,42 @@ TEST(Assembly, DepthOnlyDrawsCountAndDrawAsShadedDraws) {
         EXPECT_EQ(rtest::hash_depth(fast), rtest::hash_depth(slow)) << what;
       }
     }
+  }
+}
+
+// The setup outcomes of a depth-only draw's batches (raster/setup_batch.h), which its front end counts a batch at a
+// time (SetupLanes), against a shaded draw's one triangle at a time: tiny triangles, many of them between pixel
+// centres (outside), some with two vertices snapped together (degenerate), and back faces culled.
+TEST(Assembly, DepthOnlyBatchesCountSetupOutcomesAsShadedDraws) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> centre(-0.95f, 0.95f), off(-0.012f, 0.012f), depth(0.0f, 0.9f);
+  std::vector<glm::vec4> soup;
+  for (int t = 0; t < 20000; ++t) {
+    const float cx = centre(rng), cy = centre(rng);
+    glm::vec4 p[3];
+    for (auto& q : p) q = glm::vec4(cx + off(rng), cy + off(rng), depth(rng), 1.0f);
+    if (t % 9 == 0) p[2] = p[1];  // degenerate
+    soup.insert(soup.end(), p, p + 3);
+  }
+  const int W = 256, H = 192;  // triangles of up to ~3 pixels
+  for (int threads : {0, 2}) {
+    Renderer r(threads);
+    DrawState state;
+    state.cull = CullMode::back;
+    DepthTarget fast(W, H, DepthFormat::d32f), slow(W, H, DepthFormat::d32f);
+    ColorTarget color(W, H, ColorFormat::rgba8);
+    const DrawStats a = r.draw(RenderTargets{&fast}, state, ClipSpaceDepthShader{}, std::span<const glm::vec4>(soup));
+    const DrawStats b = r.draw(RenderTargets{&slow, &color}, state, rtest::WhiteShader{}, std::span<const glm::vec4>(soup));
+    const std::string what = std::to_string(threads) + " threads";
+    EXPECT_EQ(a.triangles, soup.size() / 3) << what;
+    EXPECT_EQ(a.culled, b.culled) << what;
+    EXPECT_EQ(a.degenerate, b.degenerate) << what;
+    EXPECT_EQ(a.rejected, b.rejected) << what;
+    EXPECT_EQ(a.setups, b.setups) << what;
+    EXPECT_GT(a.culled, a.triangles / 4) << what;
+    EXPECT_GT(a.degenerate, a.triangles / 20) << what;
+    EXPECT_GT(a.rejected, a.triangles / 10) << what;  // boxes with no pixel centre
+    EXPECT_GT(a.setups, a.triangles / 10) << what;
+    EXPECT_EQ(rtest::hash_depth(fast), rtest::hash_depth(slow)) << what;
   }
 }

@@ -1,9 +1,11 @@
 // Triangle setup eight at a time (raster/setup_batch.h) against setup_triangle() one at a time: the same outcome
 // and the same record, bit for bit, for random triangles of every size (the wide ones take the scalar fallback),
 // degenerate and outside ones, every cull mode and front face, and polygon offset in every format. The batch's
-// compact records (DepthSetup) must be exactly what packing setup_triangle()'s record gives, and expand back to it.
+// compact records (DepthSetup) must be exactly what packing setup_triangle()'s record gives, and expand back to it;
+// a sink that takes whole batches (SetupLanes) must see the same outcomes and records as one taking lanes.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cstring>
 #include <random>
 #include <type_traits>
@@ -44,6 +46,14 @@ std::vector<WindowVertex> random_vertices(const SetupParams& sp, size_t triangle
     for (const auto& q : p) v.push_back(to_window(q, sp));
   }
   return v;
+}
+
+// Every field of two full records, the floats as bits.
+bool same_fields(const TriangleSetup& x, const TriangleSetup& y) {
+  for (int k = 0; k < 3; ++k)
+    if (x.t[k] != y.t[k] || x.a[k] != y.a[k] || x.b[k] != y.b[k]) return false;
+  return x.min_x == y.min_x && x.min_y == y.min_y && x.max_x == y.max_x && x.max_y == y.max_y &&
+         std::memcmp(&x.z_a0, &y.z_a0, 4 * sizeof(float)) == 0 && x.prim == y.prim && x.flags == y.flags;
 }
 
 void expect_same(const SetupParams& sp, const std::vector<WindowVertex>& v, const std::string& what) {
@@ -91,6 +101,52 @@ void expect_same(const SetupParams& sp, const std::vector<WindowVertex>& v, cons
     ASSERT_EQ(b.flags, one.flags) << what << ", triangle " << i;
   }
   EXPECT_GT(visible, n / 10) << what;  // culling takes about half, the scissor more
+
+  // The same batches taken by a sink that also accepts a whole batch at once (SetupLanes, as the depth-only front
+  // end takes them): the same outcomes in the same order and the same records, batches without a wide lane handed
+  // over whole.
+  struct BothSink {
+    std::vector<Outcome>* out;
+    size_t batches = 0, lanes = 0;
+    void operator()(SetupResult r, const DepthSetup& t) { out->push_back({r, expand_depth_setup(t), true, t}); }
+    void operator()(SetupResult r, const TriangleSetup& t) { out->push_back({r, t}); }
+    void operator()(const SetupLanes& s) {
+      ++batches;
+      const unsigned all = s.visible | s.culled | s.degenerate | s.outside;
+      ASSERT_EQ(std::popcount(s.visible) + std::popcount(s.culled) + std::popcount(s.degenerate) +
+                    std::popcount(s.outside),
+                std::popcount(all));  // one outcome per lane
+      ASSERT_EQ(all & (all + 1), 0u);  // lanes 0 .. n − 1
+      for (int l = 0; l < std::popcount(all); ++l, ++lanes) {
+        const unsigned bit = 1u << l;
+        const SetupResult r = s.visible & bit   ? SetupResult::visible
+                              : s.culled & bit  ? SetupResult::culled
+                              : s.degenerate & bit ? SetupResult::degenerate
+                                                   : SetupResult::outside;
+        out->push_back({r, expand_depth_setup(s.record[l]), true, s.record[l]});
+      }
+    }
+  };
+  std::vector<Outcome> whole;
+  BothSink both{&whole};
+  SetupBatch batch2(sp, v.data());
+  for (size_t i = 0; i < n; ++i) {
+    batch2.push(uint32_t(3 * i), uint32_t(3 * i + 1), uint32_t(3 * i + 2), both);
+    if (i % 37 == 36) batch2.flush(both);
+  }
+  batch2.flush(both);
+  ASSERT_EQ(whole.size(), n) << what;
+  EXPECT_GT(both.batches, 0u) << what;  // some batches have no wide lane (small triangles only)
+  EXPECT_LT(both.lanes, n) << what;     // and some do
+  for (size_t i = 0; i < n; ++i) {
+    ASSERT_EQ(int(whole[i].result), int(batched[i].result)) << what << ", triangle " << i;
+    if (whole[i].result != SetupResult::visible) continue;
+    ASSERT_EQ(whole[i].compact, batched[i].compact) << what << ", triangle " << i;
+    if (whole[i].compact)
+      ASSERT_EQ(std::memcmp(&whole[i].packed, &batched[i].packed, sizeof(DepthSetup)), 0) << what << ", triangle " << i;
+    else  // field by field: the record's padding is not set
+      ASSERT_TRUE(same_fields(whole[i].setup, batched[i].setup)) << what << ", triangle " << i;
+  }
 }
 
 }  // namespace
