@@ -50,15 +50,7 @@ struct ChunkBins {
 
   // add() for recs[l], for each lane l set in `lanes`, in lane order.
   void add_lanes(const Record* recs, unsigned lanes, const TileGrid& grid) {
-    std::vector<Record>& staged = *setups_;
-    uint32_t* const counts = offsets.data() + 1;
-    for (; lanes != 0; lanes &= lanes - 1) {
-      const Record& t = recs[std::countr_zero(lanes)];
-      staged.push_back(t);
-      const int k = single_tile(t, grid);
-      if (k >= 0) ++counts[k];
-      else for_each_tile(t, grid, [&](int j) { ++counts[j]; });
-    }
+    for (; lanes != 0; lanes &= lanes - 1) add(recs[std::countr_zero(lanes)], grid);
   }
 
   // Sorts the staged records into per-tile slices (counting sort: the counts were taken by add(), then a prefix

@@ -108,13 +108,20 @@ class SetupBatch {
         sink(r, t);
         continue;
       }
-      sink(SetupResult(result_[l]), staged_[l]);
+      sink(outcome(l), staged_[l]);
     }
     n_ = 0;
   }
 
  private:
   void run();
+  SetupResult outcome(int l) const {
+    const unsigned bit = 1u << l;
+    return visible_ & bit     ? SetupResult::visible
+           : culled_ & bit    ? SetupResult::culled
+           : degenerate_ & bit ? SetupResult::degenerate
+                               : SetupResult::outside;
+  }
 
   SetupParams p_;
   const WindowVertex* win_;
@@ -124,8 +131,7 @@ class SetupBatch {
   alignas(32) int32_t idx_[3][8];
   // Results of run(), lane by lane.
   unsigned simd_lanes_ = 0;  // lanes set up here; the others go through setup_triangle()
-  alignas(32) int32_t result_[8];
-  unsigned visible_ = 0, culled_ = 0, degenerate_ = 0, outside_ = 0;  // result_ as lane masks
+  unsigned visible_ = 0, culled_ = 0, degenerate_ = 0, outside_ = 0;  // each lane's outcome: its bit in one mask
   DepthSetup staged_[8];  // lane l's record, written by two 8 × 8 transposes
 };
 
@@ -173,13 +179,8 @@ inline void SetupBatch::run() {
   const VecI32 max_y = simd::min(VecI32::splat(p_.clip.y1), simd::shift_right<kSubpixelBits>(ymax - VecI32::splat(half)));
   const Mask outside = simd::cmp_lt(max_x, min_x) | simd::cmp_lt(max_y, min_y);
 
-  // The outcome in setup_triangle()'s order of tests.
-  VecI32 result = VecI32::splat(int32_t(SetupResult::visible));
-  result = simd::select(outside, result, VecI32::splat(int32_t(SetupResult::outside)));
-  result = simd::select(culled, result, VecI32::splat(int32_t(SetupResult::culled)));
-  result = simd::select(degenerate, result, VecI32::splat(int32_t(SetupResult::degenerate)));
-  result.store_u32(reinterpret_cast<uint32_t*>(result_));
-  degenerate_ = degenerate.bits();  // the same precedence as the selects above
+  // The outcome in setup_triangle()'s order of tests: degenerate before culled before outside.
+  degenerate_ = degenerate.bits();
   culled_ = culled.bits() & ~degenerate_;
   outside_ = outside.bits() & ~(culled_ | degenerate_);
   visible_ = ~(outside_ | culled_ | degenerate_) & 0xFFu;
