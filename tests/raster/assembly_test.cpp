@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/triangle_soup.h"
 #include "raster/assembly.h"
 #include "tests/raster/raster_test_util.h"
 
@@ -193,5 +194,47 @@ TEST(Assembly, DepthOnlyBatchesCountSetupOutcomesAsShadedDraws) {
     EXPECT_GT(a.rejected, a.triangles / 10) << what;  // boxes with no pixel centre
     EXPECT_GT(a.setups, a.triangles / 10) << what;
     EXPECT_EQ(rtest::hash_depth(fast), rtest::hash_depth(slow)) << what;
+  }
+}
+
+// A depth-only mesh draw measures its chunks' vertex ranges to choose between shading each chunk's own range and
+// shading every vertex once (renderer.h), and stops measuring at the first chunk whose range is not compact. The
+// chunks it skipped still hold the ranges of the renderer's previous draw, which must not be used: here a soup
+// drawn first leaves compact ranges on every chunk, then a mesh over the same vertices whose first chunk reaches a
+// little too far (alone it would still pass the total) and whose other chunks read each other's vertices. Inline
+// (0 threads) the chunks run in order, so the later ones are skipped every time. Same bits as a shaded draw of the
+// mesh, and as the mesh drawn by a renderer with no previous draw.
+TEST(Assembly, MeshDrawsAfterASoupUseNoStaleVertexRanges) {
+  constexpr uint32_t kTris = 8000, kChunk = 2000;  // 0 threads: four chunks of 2000 triangles (renderer.h)
+  ASSERT_EQ(detail::chunk_triangles(kTris, 1), kChunk);
+  const auto soup = bench::make_soup(kTris, 30.0, 256, 7);
+  std::vector<uint32_t> mesh(3 * kTris);
+  for (uint32_t t = 0; t < kTris; ++t) {
+    const uint32_t chunk = t / kChunk;
+    uint32_t from = t;                                                // chunk 0 reads its own triangles' vertices
+    if (chunk == 1 || chunk == 3) from = (4 - chunk) * kChunk + t % kChunk;  // chunks 1 and 3 swap theirs
+    if (t == kChunk - 1) from = kChunk + 300;                         // chunk 0's last reaches into chunk 1's
+    for (uint32_t k = 0; k < 3; ++k) mesh[3 * t + k] = 3 * from + k;
+  }
+  const std::span<const glm::vec4> pos(soup.positions);
+  auto depth_only = [&](Renderer& r, std::span<const uint32_t> idx) {
+    DepthTarget d(256, 256, DepthFormat::d32f);
+    d.clear(1.0f);
+    r.draw(RenderTargets{&d}, DrawState{}, ClipSpaceDepthShader{}, pos, idx);
+    return rtest::hash_depth(d);
+  };
+  Renderer fresh(0), shaded(0);
+  DepthTarget d(256, 256, DepthFormat::d32f);
+  ColorTarget color(256, 256, ColorFormat::rgba8);
+  d.clear(1.0f);
+  shaded.draw(RenderTargets{&d, &color}, DrawState{}, rtest::WhiteShader{}, pos, std::span<const uint32_t>(mesh));
+  const uint64_t expected = rtest::hash_depth(d);
+  EXPECT_EQ(depth_only(fresh, mesh), expected);
+  for (int threads : {0, 1, 2}) {
+    Renderer r(threads);
+    const uint64_t soup_hash = depth_only(r, {});  // non-indexed: every chunk's range compact
+    EXPECT_NE(soup_hash, expected) << threads;     // the mesh draws other triangles than the soup
+    EXPECT_EQ(depth_only(r, mesh), expected) << threads << " threads";
+    EXPECT_EQ(depth_only(r, {}), soup_hash) << threads << " threads";
   }
 }

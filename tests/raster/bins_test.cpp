@@ -45,7 +45,7 @@ TEST(Bins, StreamedScatterWritesTheRecordsOfThePlainCopy) {
   const TileGrid grid{10, 7};
   const auto records = random_records(5000, 3);
   ChunkBins<DepthSetup> plain, streamed;
-  std::vector<DepthSetup> staging;  // one worker's, set up and binned one chunk after the other
+  Staging<DepthSetup> staging;  // one worker's, set up and binned one chunk after the other
   plain.reset(grid, staging);
   for (const DepthSetup& d : records) plain.add(d, grid);
   plain.bin(grid, false);
@@ -67,6 +67,33 @@ TEST(Bins, StreamedScatterWritesTheRecordsOfThePlainCopy) {
     }
   }
   EXPECT_EQ(at, plain.offsets[size_t(tile) + 1]);
+}
+
+// A set-up batch's visible lanes handed over together (add_lanes, the depth-only front end's path) stage and bin
+// exactly as the same records added one at a time: random lane masks, none, some and all of eight.
+TEST(Bins, LanesStageTheRecordsOfOneAtATime) {
+  const TileGrid grid{10, 7};
+  const auto records = random_records(4000, 9);
+  std::mt19937 rng(4);
+  ChunkBins<DepthSetup> one, lanes;
+  Staging<DepthSetup> staging_one, staging_lanes;
+  one.reset(grid, staging_one);
+  lanes.reset(grid, staging_lanes);
+  size_t kept = 0;
+  for (size_t g = 0; g + 8 <= records.size(); g += 8) {
+    const unsigned mask = g % 80 == 0 ? 0xFFu : g % 88 == 8 ? 0u : unsigned(rng()) & 0xFFu;
+    for (int l = 0; l < 8; ++l)
+      if (mask >> l & 1u) one.add(records[g + size_t(l)], grid), ++kept;
+    lanes.add_lanes(records.data() + g, mask, grid);
+  }
+  ASSERT_EQ(staging_lanes.size(), kept);
+  ASSERT_EQ(std::memcmp(staging_one.data(), staging_lanes.data(), kept * sizeof(DepthSetup)), 0);
+  one.bin(grid);
+  lanes.bin(grid);
+  ASSERT_EQ(one.offsets, lanes.offsets);
+  ASSERT_EQ(one.binned.size(), lanes.binned.size());
+  EXPECT_GT(one.binned.size(), kept);  // some records went to several tiles
+  EXPECT_EQ(std::memcmp(one.binned.data(), lanes.binned.data(), one.binned.size() * sizeof(DepthSetup)), 0);
 }
 
 // 40 000 triangles of ~60 px bin with non-temporal stores (detail::kStreamBinsBytes); the same triangles drawn
