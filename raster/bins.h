@@ -79,7 +79,7 @@ struct ChunkBins {
   // written there as two 32-byte halves each (setup_batch.h's two transposes): each is copied as those two halves,
   // which the store buffer forwards, where one 64-byte load spanning both had to wait until they reached the
   // cache. Measured on the 2-core AMD EPYC (Zen 4), AVX-512 path, 2 threads, shadowlab alone, four rounds
-  // alternating: the dragon's front end (bench/depth_pass_bench.cpp) 7.96–8.24 → 7.77–8.07 ms.
+  // alternating: the dragon's front end (bench/depth_pass_bench.cpp) 7.98–8.24 → 7.77–8.07 ms.
   void add_lanes(const Record* recs, unsigned lanes, const TileGrid& grid) {
     const size_t n = setups_->size();
     setups_->resize(n + size_t(std::popcount(lanes)));
