@@ -429,7 +429,8 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   // vertex once for the whole draw instead, as shaded draws always do. One chunk whose range is not compact
   // decides that, so the chunks still to be measured are skipped once one is found (`spread`): a mesh's index
   // buffer is then not read twice. Measured on the 2-core AMD EPYC (Zen 4), 2 threads: measuring every chunk of
-  // the dragon's 871k triangles took 0.37 ms of its 8.3 ms front end (its 10 MB of indices read from memory).
+  // the dragon's 871k triangles took 0.26–0.37 ms of its 8 ms front end (its 10 MB of indices read from memory),
+  // stopping at its first chunk 0.06 ms.
   for (size_t c = 0; c < nchunks; ++c) chunks_[c]->pending = true;
   if constexpr (!kShaded) {
     // Whether a chunk was found whose vertices are not compact; whichever chunk finds it, the outcome is the same.
@@ -450,7 +451,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       });
     });
     // Every chunk's range was measured unless `spread` is set (skipped chunks keep a previous draw's values).
-    bool compact = !spread.load(std::memory_order_relaxed);
+    const bool compact = !spread.load(std::memory_order_relaxed);
     size_t shaded = 0;  // vertices the chunks would shade between them
     for (size_t c = 0; c < nchunks && compact; ++c) shaded += size_t(chunks_[c]->range_hi - chunks_[c]->range_lo) + 1;
     if (compact && shaded <= nv + nv / 8) {
