@@ -18,8 +18,9 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/simd_records_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/isa_namespace_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/thread_pool_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/isa_select_test.cpp
 )
-list(APPEND SHADOWLAB_TEST_LIBS shadowlab::raster)
+list(APPEND SHADOWLAB_TEST_LIBS shadowlab::raster shadowlab_isa_select)
 # Conformance against Mesa llvmpipe needs the GL reference (raster/reference/).
 if(TARGET shadowlab::glref)
   list(APPEND SHADOWLAB_TEST_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/raster/conformance_test.cpp)

@@ -1,0 +1,89 @@
+// The instruction-set choice of isa_select.h, from CPUID and XGETBV.
+#include "raster/simd/isa_select.h"
+
+#include <cstring>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
+#endif
+
+namespace raster::simd {
+
+// Read from CPUID rather than __builtin_cpu_supports, which GCC and clang do not both know for LZCNT and F16C; the
+// XCR0 test keeps a hypervisor's AVX2 that the guest cannot use from being taken.
+bool cpu_has_avx2() {
+#if defined(__x86_64__) || defined(__i386__)
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  if (__get_cpuid_max(0, nullptr) < 7) return false;
+  __cpuid_count(1, 0, a, b, c, d);
+  const bool fma = c & (1u << 12), osxsave = c & (1u << 27), avx = c & (1u << 28), f16c = c & (1u << 29);
+  if (!(fma && osxsave && avx && f16c)) return false;
+  unsigned xcr0_lo = 0, xcr0_hi = 0;
+  __asm__ volatile("xgetbv" : "=a"(xcr0_lo), "=d"(xcr0_hi) : "c"(0));
+  if ((xcr0_lo & 0x6u) != 0x6u) return false;
+  __cpuid_count(7, 0, a, b, c, d);
+  const bool bmi1 = b & (1u << 3), avx2 = b & (1u << 5), bmi2 = b & (1u << 8);
+  if (!(bmi1 && avx2 && bmi2)) return false;
+  if (__get_cpuid_max(0x80000000u, nullptr) < 0x80000001u) return false;
+  __cpuid_count(0x80000001u, 0, a, b, c, d);
+  return c & (1u << 5);  // LZCNT (ABM)
+#else
+  return false;
+#endif
+}
+
+bool cpu_has_avx512() {
+#if defined(__x86_64__) || defined(__i386__)
+  if (!cpu_has_avx2()) return false;
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  unsigned xcr0_lo = 0, xcr0_hi = 0;
+  __asm__ volatile("xgetbv" : "=a"(xcr0_lo), "=d"(xcr0_hi) : "c"(0));
+  if ((xcr0_lo & 0xE6u) != 0xE6u) return false;  // XMM, YMM, opmask, ZMM_Hi256, Hi16_ZMM
+  __cpuid_count(7, 0, a, b, c, d);
+  const bool f = b & (1u << 16), dq = b & (1u << 17), bw = b & (1u << 30), vl = b & (1u << 31);
+  return f && dq && bw && vl;
+#else
+  return false;
+#endif
+}
+
+const char* isa_name(Isa isa) {
+  switch (isa) {
+    case Isa::avx512: return "avx512";
+    case Isa::avx2: return "avx2";
+    case Isa::scalar: break;
+  }
+  return "scalar";
+}
+
+std::optional<Isa> select_isa(const char* forced, BuiltIsas built, std::string& error) {
+  if (forced != nullptr && *forced == '\0') forced = nullptr;
+  const bool want_auto = forced == nullptr || std::strcmp(forced, "auto") == 0;
+  auto asked = [&](const char* name) { return want_auto || std::strcmp(forced, name) == 0; };
+  if (!want_auto && !asked("avx512") && !asked("avx2") && !asked("scalar")) {
+    error = "unknown instruction set (expected avx512, avx2, scalar or auto)";
+    return std::nullopt;
+  }
+  if (asked("avx512")) {
+    if (built.avx512 && cpu_has_avx512()) return Isa::avx512;
+    if (!want_auto) {
+      error = built.avx512 ? "avx512 was asked for, but this CPU lacks AVX-512 F, DQ, BW or VL (or AVX2)"
+                           : "avx512 was asked for, but this build has no AVX-512 path (SHADOWLAB_ISAS)";
+      return std::nullopt;
+    }
+  }
+  if (asked("avx2")) {
+    if (built.avx2 && cpu_has_avx2()) return Isa::avx2;
+    if (!want_auto) {
+      error = built.avx2 ? "avx2 was asked for, but this CPU lacks AVX2, FMA, BMI1/2, LZCNT or F16C"
+                         : "avx2 was asked for, but this build has no AVX2 path (SHADOWLAB_ISAS)";
+      return std::nullopt;
+    }
+  }
+  if (built.scalar) return Isa::scalar;
+  error = want_auto ? "this CPU lacks the instruction sets this build has (SHADOWLAB_ISAS)"
+                    : "scalar was asked for, but this build has no scalar path (SHADOWLAB_ISAS)";
+  return std::nullopt;
+}
+
+}  // namespace raster::simd
