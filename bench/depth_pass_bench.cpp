@@ -24,6 +24,10 @@
 #include "bench/triangle_soup.h"
 #include "raster/reference/gl_reference.h"
 #include "raster/renderer.h"
+#include "raster/simd/isa.h"
+
+namespace bench {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -62,6 +66,7 @@ uint64_t map_hash(const raster::DepthTarget& t) {
 int verify(const std::vector<Workload>& workloads, raster::Renderer& renderer, raster::DepthTarget& target,
            glref::Context* gl) {
   int status = 0;
+  std::printf("SIMD path %s, %d thread(s)\n", SHADOWLAB_ISA_NAME, renderer.threads());
   for (const Workload& w : workloads) {
     target.clear(1.0f);
     renderer.draw(raster::RenderTargets{&target}, raster::DrawState{}, raster::ClipSpaceDepthShader{},
@@ -94,7 +99,8 @@ int verify(const std::vector<Workload>& workloads, raster::Renderer& renderer, r
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The program for this instruction set: bench/isa_main.cpp picks one when it starts.
+int run(int argc, char** argv) {
   if (const auto status = bench::run_scaling(argc, argv)) return *status;
   bool verify_only = false;
   for (int i = 1; i < argc; ++i)
@@ -159,7 +165,8 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks(&reporter);
   if (!reporter.any_ran()) return 0;  // only listed, or nothing matched the filter
 
-  std::printf("\nDepth-only pass, %dx%d d32f, %d thread(s), medians:\n", kMapSize, kMapSize, renderer.threads());
+  std::printf("\nDepth-only pass, %dx%d d32f, %d thread(s), SIMD path %s, medians:\n", kMapSize, kMapSize,
+              renderer.threads(), SHADOWLAB_ISA_NAME);
   std::printf("%-16s %12s %12s %10s %10s %10s %10s %8s\n", "case", "shadowlab ms", "llvmpipe ms", "SL Mtri/s",
               "LP Mtri/s", "SL Gpix/s", "LP Gpix/s", "ratio");
   for (const Workload& w : workloads) {
@@ -183,3 +190,6 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+
+SHADOWLAB_ISA_END
+}  // namespace bench

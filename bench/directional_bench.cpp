@@ -15,6 +15,10 @@
 #include "bench/bench_common.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/frame/frame.h"
+#include "raster/simd/isa.h"
+
+namespace bench {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -29,7 +33,8 @@ struct Setup {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The program for this instruction set: bench/isa_main.cpp picks one when it starts.
+int run(int argc, char** argv) {
   bench::Options opt = bench::parse_options(argc, argv);
   const std::string scene_name = "duel";
   const scenes::Scene scene = scenes::builtin_scene(scene_name);
@@ -81,3 +86,6 @@ int main(int argc, char** argv) {
   if (u > 0) std::printf("4 cascades of %d² / one %d² map, map passes: %.2f (issue 15: at most 1.5)\n", half, full, c / u);
   return 0;
 }
+
+SHADOWLAB_ISA_END
+}  // namespace bench

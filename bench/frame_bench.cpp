@@ -10,8 +10,13 @@
 #include "bench/bench_common.h"
 #include "scenes/frame/frame.h"
 #include "scenes/builtin_scenes.h"
+#include "raster/simd/isa.h"
 
-int main(int argc, char** argv) {
+namespace bench {
+SHADOWLAB_ISA_BEGIN
+
+// The program for this instruction set: bench/isa_main.cpp picks one when it starts.
+int run(int argc, char** argv) {
   bench::Options opt = bench::parse_options(argc, argv);
   const scenes::Scene scene = scenes::builtin_scene("tutorial");
   raster::Renderer renderer(opt.threads);
@@ -44,3 +49,6 @@ int main(int argc, char** argv) {
     std::printf("%-12s %8.2f ms\n", filter, reporter.median_ms(std::string("tutorial/") + filter));
   return 0;
 }
+
+SHADOWLAB_ISA_END
+}  // namespace bench

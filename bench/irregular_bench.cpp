@@ -17,6 +17,10 @@
 #include "bench/bench_common.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/frame/frame.h"
+#include "raster/simd/isa.h"
+
+namespace bench {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -30,7 +34,8 @@ struct Setup {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The program for this instruction set: bench/isa_main.cpp picks one when it starts.
+int run(int argc, char** argv) {
   bench::Options opt = bench::parse_options(argc, argv);
   const std::string scene_name = "duel";
   const scenes::Scene scene = scenes::builtin_scene(scene_name);
@@ -87,3 +92,6 @@ int main(int argc, char** argv) {
   std::printf("issue 21: irregular at one sample per pixel at most 3× the classic 2048² PCF frame\n");
   return 0;
 }
+
+SHADOWLAB_ISA_END
+}  // namespace bench

@@ -20,6 +20,10 @@
 #include "raster/renderer.h"
 #include "shading/shadow_lookup.h"
 #include "shading/texture.h"
+#include "raster/simd/isa.h"
+
+namespace bench {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -97,7 +101,8 @@ struct PcfPassShader {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The program for this instruction set: bench/isa_main.cpp picks one when it starts.
+int run(int argc, char** argv) {
   if (const auto status = bench::run_scaling(argc, argv)) return *status;
   bench::Options opt = bench::parse_options(argc, argv);
   const int W = opt.smoke ? 480 : 1920, H = opt.smoke ? 270 : 1080;
@@ -162,8 +167,8 @@ int main(int argc, char** argv) {
   bench::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   if (!reporter.any_ran()) return 0;  // only listed, or nothing matched the filter
-  std::printf("\nFull-screen PCF pass, %dx%d into a %d² d32f map, %d thread(s), medians:\n", W, H, kMap,
-              renderer.threads());
+  std::printf("\nFull-screen PCF pass, %dx%d into a %d² d32f map, %d thread(s), SIMD path %s, medians:\n", W, H, kMap,
+              renderer.threads(), SHADOWLAB_ISA_NAME);
   std::printf("%-16s %12s %12s %8s\n", "case", "shadowlab ms", "llvmpipe ms", "ratio");
   for (const char* c : {"no_lookup", "pcf_1_tap", "poisson_16_taps"}) {
     const double sl = reporter.median_ms(std::string(c) + "/shadowlab");
@@ -174,3 +179,6 @@ int main(int argc, char** argv) {
   for (const char* c : {"no_lookup", "pcf_1_tap", "poisson_16_taps"}) bench::print_scaling_row(c, renderer.threads(), reporter);
   return 0;
 }
+
+SHADOWLAB_ISA_END
+}  // namespace bench

@@ -14,6 +14,10 @@
 #include "bench/bench_common.h"
 #include "scenes/frame/frame.h"
 #include "scenes/builtin_scenes.h"
+#include "raster/simd/isa.h"
+
+namespace bench {
+SHADOWLAB_ISA_BEGIN
 
 namespace {
 
@@ -32,7 +36,8 @@ struct Result {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The program for this instruction set: bench/isa_main.cpp picks one when it starts.
+int run(int argc, char** argv) {
   bench::Options opt = bench::parse_options(argc, argv);
   raster::Renderer renderer(opt.threads);
   const int width = opt.smoke ? 320 : 1280, height = opt.smoke ? 180 : 720;
@@ -80,3 +85,6 @@ int main(int argc, char** argv) {
                 cases[c].mode, reporter.median_ms(cases[c].name()), results[c].rebuilt, results[c].passes);
   return 0;
 }
+
+SHADOWLAB_ISA_END
+}  // namespace bench
