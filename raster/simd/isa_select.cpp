@@ -59,30 +59,29 @@ const char* isa_name(Isa isa) {
 std::optional<Isa> select_isa(const char* forced, BuiltIsas built, std::string& error) {
   if (forced != nullptr && *forced == '\0') forced = nullptr;
   const bool want_auto = forced == nullptr || std::strcmp(forced, "auto") == 0;
-  auto asked = [&](const char* name) { return want_auto || std::strcmp(forced, name) == 0; };
-  if (!want_auto && !asked("avx512") && !asked("avx2") && !asked("scalar")) {
-    error = "unknown instruction set (expected avx512, avx2, scalar or auto)";
+  struct Candidate {
+    Isa isa;
+    bool built;
+    bool (*cpu_has)();  // null: any CPU
+    const char* cpu_lacks;
+    const char* build_lacks;
+  };
+  // Widest first, as auto takes them.
+  const Candidate candidates[] = {
+      {Isa::avx512, built.avx512, cpu_has_avx512, "this CPU lacks AVX-512 F, DQ, BW or VL (or AVX2)", "AVX-512"},
+      {Isa::avx2, built.avx2, cpu_has_avx2, "this CPU lacks AVX2, FMA, BMI1/2, LZCNT or F16C", "AVX2"},
+      {Isa::scalar, built.scalar, nullptr, "", "scalar"},
+  };
+  for (const Candidate& c : candidates) {
+    if (!want_auto && std::strcmp(forced, isa_name(c.isa)) != 0) continue;
+    if (c.built && (c.cpu_has == nullptr || c.cpu_has())) return c.isa;
+    if (want_auto) continue;
+    error = std::string(isa_name(c.isa)) + " was asked for, but " +
+            (c.built ? c.cpu_lacks : "this build has no " + std::string(c.build_lacks) + " path (SHADOWLAB_ISAS)");
     return std::nullopt;
   }
-  if (asked("avx512")) {
-    if (built.avx512 && cpu_has_avx512()) return Isa::avx512;
-    if (!want_auto) {
-      error = built.avx512 ? "avx512 was asked for, but this CPU lacks AVX-512 F, DQ, BW or VL (or AVX2)"
-                           : "avx512 was asked for, but this build has no AVX-512 path (SHADOWLAB_ISAS)";
-      return std::nullopt;
-    }
-  }
-  if (asked("avx2")) {
-    if (built.avx2 && cpu_has_avx2()) return Isa::avx2;
-    if (!want_auto) {
-      error = built.avx2 ? "avx2 was asked for, but this CPU lacks AVX2, FMA, BMI1/2, LZCNT or F16C"
-                         : "avx2 was asked for, but this build has no AVX2 path (SHADOWLAB_ISAS)";
-      return std::nullopt;
-    }
-  }
-  if (built.scalar) return Isa::scalar;
   error = want_auto ? "this CPU lacks the instruction sets this build has (SHADOWLAB_ISAS)"
-                    : "scalar was asked for, but this build has no scalar path (SHADOWLAB_ISAS)";
+                    : "unknown instruction set (expected avx512, avx2, scalar or auto)";
   return std::nullopt;
 }
 

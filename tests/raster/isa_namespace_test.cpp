@@ -25,7 +25,7 @@ const std::vector<std::string> kIsaFolders = {"raster", "raster/simd", "shading"
 // Built once and shared (their types cross between the sets and the scene library), or the entry point that
 // chooses the set and the choice itself (built for plain x86-64).
 const std::set<std::string> kShared = {"raster/formats.h", "raster/state.h", "raster/simd/isa.h",
-                                       "raster/simd/isa_select.h", "raster/simd/isa_select.cpp",
+                                       "raster/simd/isa_select.h", "raster/simd/isa_select.cpp", "raster/simd/isa_entry.h",
                                        "shading/tone_map.h", "shading/techniques/vocabulary.h", "cli/main.cpp"};
 // Namespaces of other libraries a file may reopen (CLI11's, for a forward declaration).
 const std::set<std::string> kForeign = {"CLI"};

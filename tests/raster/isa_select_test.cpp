@@ -45,19 +45,21 @@ TEST(IsaSelect, AutoFallsBackToTheSetsBuilt) {
 TEST(IsaSelect, ForcedSetIsTakenOrRefused) {
   std::string error;
   EXPECT_EQ(select_isa("scalar", kAll, error), Isa::scalar);
-  const auto avx2 = select_isa("avx2", kAll, error);
-  if (raster::simd::cpu_has_avx2()) {
-    EXPECT_EQ(avx2, Isa::avx2);
-  } else {
-    EXPECT_FALSE(avx2.has_value());
-    EXPECT_THAT(error, HasSubstr("this CPU lacks AVX2"));
-  }
-  const auto avx512 = select_isa("avx512", kAll, error);
-  if (raster::simd::cpu_has_avx512()) {
-    EXPECT_EQ(avx512, Isa::avx512);
-  } else {
-    EXPECT_FALSE(avx512.has_value());
-    EXPECT_THAT(error, HasSubstr("this CPU lacks AVX-512"));
+  struct Case {
+    const char* name;
+    Isa isa;
+    bool cpu_has;
+    const char* refusal;
+  };
+  for (const Case& c : {Case{"avx2", Isa::avx2, raster::simd::cpu_has_avx2(), "this CPU lacks AVX2"},
+                        Case{"avx512", Isa::avx512, raster::simd::cpu_has_avx512(), "this CPU lacks AVX-512"}}) {
+    const auto isa = select_isa(c.name, kAll, error);
+    if (c.cpu_has) {
+      EXPECT_EQ(isa, c.isa) << c.name;
+    } else {
+      EXPECT_FALSE(isa.has_value()) << c.name;
+      EXPECT_THAT(error, HasSubstr(c.refusal));
+    }
   }
   EXPECT_FALSE(select_isa("avx512", BuiltIsas{false, true, true}, error).has_value());
   EXPECT_EQ(error, "avx512 was asked for, but this build has no AVX-512 path (SHADOWLAB_ISAS)");
