@@ -49,7 +49,7 @@ std::span<const glm::vec2> pixel_sample_offsets(int samples_per_pixel) {
     case 8: return kEight;
     case 32: {
       // Built on first use, not at start-up: a namespace-scope initialiser would run this set's code before
-      // cli/main.cpp has chosen the set (raster/simd/isa.h).
+      // the entry point has chosen the set (raster/simd/isa.h).
       static const std::array<glm::vec2, 32> lattice = lattice32();
       return lattice;
     }

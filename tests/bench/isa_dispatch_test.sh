@@ -7,9 +7,12 @@
 set -uo pipefail
 depth=$1 pcf=$2 shadowlab=$3 isas=$4
 fail() { echo "FAIL: $*" >&2; exit 1; }
+# The generated soups only: the glTF dragon (../shared/assets) would make each run, and the emulated one most,
+# slow, and the test would depend on the assets being there.
+export SHADOWLAB_ASSETS=/nonexistent
 strip() { sed 's/\x1b\[[0-9;]*m//g'; }
 
-expected=$("$shadowlab" --version | sed -n 's/.*SIMD path \([a-z0-9]*\).*/\1/p')
+expected=$(env -u SHADOWLAB_ISA "$shadowlab" --version | sed -n 's/.*SIMD path \([a-z0-9]*\).*/\1/p')
 [ -n "$expected" ] || fail "shadowlab --version names no SIMD path"
 out=$(env -u SHADOWLAB_ISA "$depth" --smoke --threads 2 --no-llvmpipe 2>&1 | strip) || fail "default run failed"
 grep -q "^simd_path: $expected\$" <<<"$out" || fail "default run does not report simd_path $expected: $(grep simd_path <<<"$out")"
@@ -17,7 +20,7 @@ grep -q "SIMD path $expected, medians" <<<"$out" || fail "default run's summary 
 
 reference="" ran=0
 for isa in ${isas//;/ }; do
-  out=$(SHADOWLAB_ISA=$isa "$depth" --smoke --threads 2 --verify 2>&1 | strip)
+  out=$(SHADOWLAB_ISA=$isa "$depth" --smoke --threads 2 --verify --no-llvmpipe 2>&1 | strip)
   rc=$?
   if [ $rc -ne 0 ] && grep -q "this CPU lacks" <<<"$out"; then
     echo "skip $isa: $(tail -1 <<<"$out")"
@@ -26,7 +29,7 @@ for isa in ${isas//;/ }; do
   [ $rc -eq 0 ] || fail "SHADOWLAB_ISA=$isa: exit $rc: $out"
   grep -q "^SIMD path $isa, 2 thread(s)\$" <<<"$out" || fail "SHADOWLAB_ISA=$isa did not run $isa: $out"
   hashes=$(grep -o "hash [0-9a-f]*" <<<"$out" | tr '\n' ' ')
-  [ "$(wc -w <<<"$hashes")" -eq 6 ] || fail "SHADOWLAB_ISA=$isa: expected three map hashes, got '$hashes'"
+  [ "$(wc -w <<<"$hashes")" -ge 4 ] || fail "SHADOWLAB_ISA=$isa: expected a map hash per case, got '$hashes'"
   if [ -z "$reference" ]; then reference=$hashes; ref_isa=$isa
   else [ "$hashes" = "$reference" ] || fail "$isa maps ($hashes) differ from $ref_isa's ($reference)"; fi
   pout=$(SHADOWLAB_ISA=$isa "$pcf" --smoke --threads 2 --no-llvmpipe 2>&1 | strip) || fail "PCF bench on $isa failed"

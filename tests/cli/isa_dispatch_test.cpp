@@ -31,7 +31,8 @@ bool built(const std::string& isa) {
   return list.find(std::string(",").append(isa).append(",")) != std::string::npos;
 }
 
-// Whether this machine runs the path of set `isa`: the executable's own answer (cli/main.cpp reads CPUID).
+// Whether this machine runs the path of set `isa`: the executable's own answer (raster/simd/isa_select.cpp reads
+// CPUID for it).
 bool cpu_runs(const std::string& isa) {
   static std::map<std::string, bool> known;
   if (!known.count(isa)) {

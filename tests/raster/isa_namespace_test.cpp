@@ -21,12 +21,14 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<std::string> kIsaFolders = {"raster", "raster/simd", "shading", "shading/techniques",
-                                              "scenes/io", "scenes/frame", "scenes/reference", "cli"};
-// Built once and shared (their types cross between the sets and the scene library), or the entry point that
-// chooses the set and the choice itself (built for plain x86-64).
+                                              "scenes/io", "scenes/frame", "scenes/reference", "cli", "bench"};
+// Built once and shared (their types cross between the sets and the scene library), or the entry points that
+// choose the set and the choice itself (built for plain x86-64), and the benchmarks' plain helpers.
 const std::set<std::string> kShared = {"raster/formats.h", "raster/state.h", "raster/simd/isa.h",
                                        "raster/simd/isa_select.h", "raster/simd/isa_select.cpp", "raster/simd/isa_entry.h",
-                                       "shading/tone_map.h", "shading/techniques/vocabulary.h", "cli/main.cpp"};
+                                       "shading/tone_map.h", "shading/techniques/vocabulary.h", "cli/main.cpp",
+                                       "bench/isa_main.cpp", "bench/bench_common.h", "bench/bench_common.cpp",
+                                       "bench/triangle_soup.h"};
 // Namespaces of other libraries a file may reopen (CLI11's, for a forward declaration).
 const std::set<std::string> kForeign = {"CLI"};
 
