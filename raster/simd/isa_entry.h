@@ -34,21 +34,22 @@ namespace raster::simd {
 // Runs the chosen set's run(argc, argv); or prints `PROGRAM: error: SHADOWLAB_ISA: why` and returns 2 when none
 // can run. on_choice, if given, is told the set first.
 inline int run_entry(const char* program, int argc, char** argv, void (*on_choice)(Isa) = nullptr) {
-  BuiltIsas built;
-  int (*run[3])(int, char**) = {nullptr, nullptr, nullptr};  // by Isa
+  int (*run[3])(int, char**) = {nullptr, nullptr, nullptr};  // by Isa; null where the set is not built
 #if defined(SHADOWLAB_HAVE_ISA_AVX512)
-  built.avx512 = true, run[int(Isa::avx512)] = SHADOWLAB_ENTRY_NAMESPACE::isa_avx512::run;
+  run[int(Isa::avx512)] = SHADOWLAB_ENTRY_NAMESPACE::isa_avx512::run;
 #endif
 #if defined(SHADOWLAB_HAVE_ISA_AVX2)
-  built.avx2 = true, run[int(Isa::avx2)] = SHADOWLAB_ENTRY_NAMESPACE::isa_avx2::run;
+  run[int(Isa::avx2)] = SHADOWLAB_ENTRY_NAMESPACE::isa_avx2::run;
 #endif
 #if defined(SHADOWLAB_HAVE_ISA_SCALAR)
-  built.scalar = true, run[int(Isa::scalar)] = SHADOWLAB_ENTRY_NAMESPACE::isa_scalar::run;
+  run[int(Isa::scalar)] = SHADOWLAB_ENTRY_NAMESPACE::isa_scalar::run;
 #endif
+  const BuiltIsas built{run[int(Isa::avx512)] != nullptr, run[int(Isa::avx2)] != nullptr,
+                        run[int(Isa::scalar)] != nullptr};
   std::string error;
-  const auto isa = select_isa(std::getenv("SHADOWLAB_ISA"), built, error);
-  if (!isa || run[int(*isa)] == nullptr) {
-    std::fprintf(stderr, "%s: error: SHADOWLAB_ISA: %s\n", program, isa ? "no such set built" : error.c_str());
+  const auto isa = select_isa(std::getenv("SHADOWLAB_ISA"), built, error);  // only ever a set that is built
+  if (!isa) {
+    std::fprintf(stderr, "%s: error: SHADOWLAB_ISA: %s\n", program, error.c_str());
     return 2;
   }
   if (on_choice) on_choice(*isa);
