@@ -94,8 +94,51 @@ std::string shell_quote(const std::string& a) {
 }
 }  // namespace
 
+namespace {
+
+// The first processor's "model name", "cpu family" and "model" lines of /proc/cpuinfo, and the logical CPUs, as
+// one line ("AMD EPYC (family 25, model 17), 2 logical CPUs"); what the system does not say is left out.
+std::string cpu_line() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line, name, family, model;
+  auto value = [](const std::string& l) {
+    const size_t c = l.find(':');
+    std::string v = c == std::string::npos ? "" : l.substr(c + 1);
+    v.erase(0, v.find_first_not_of(" \t"));
+    return v;
+  };
+  while (std::getline(in, line) && !line.empty()) {
+    if (line.rfind("model name", 0) == 0) name = value(line);
+    else if (line.rfind("cpu family", 0) == 0) family = value(line);
+    else if (line.rfind("model", 0) == 0 && line.find("name") == std::string::npos) model = value(line);
+  }
+  std::string out = name.empty() ? "unknown CPU" : name;
+  if (!family.empty()) out += " (family " + family + (model.empty() ? "" : ", model " + model) + ")";
+  return out + ", " + std::to_string(std::max(1u, std::thread::hardware_concurrency())) + " logical CPUs";
+}
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// "a–b" with two decimals, or one value where both read the same.
+std::string range_text(const std::vector<double>& v) {
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  char a[32], b[32];
+  std::snprintf(a, sizeof a, "%.2f", *lo);
+  std::snprintf(b, sizeof b, "%.2f", *hi);
+  return std::strcmp(a, b) == 0 ? std::string(a) : std::string(a) + "–" + b;
+}
+
+}  // namespace
+
 std::optional<int> run_scaling(int argc, char** argv) {
   bool scaling = false;
+  int runs = 0;  // 0: no --runs
+  int threads = -1;
   std::vector<int> counts;
   std::string json_dir;
   std::vector<std::string> rest;
@@ -107,16 +150,28 @@ std::optional<int> run_scaling(int argc, char** argv) {
         std::stringstream list(argv[++i]);
         for (std::string n; std::getline(list, n, ',');) counts.push_back(std::max(0, std::atoi(n.c_str())));
       }
+    } else if (a == "--runs") {
+      const char* v = i + 1 < argc ? argv[++i] : "";
+      char* end = nullptr;
+      const long n = std::strtol(v, &end, 10);
+      if (*v == '\0' || *end != '\0' || n < 1 || n > 1000) {
+        std::fprintf(stderr, "--runs: expected a whole number of runs from 1 to 1000, got '%s'\n", v);
+        return 2;
+      }
+      runs = int(n);
     } else if (a == "--json-dir" && i + 1 < argc) {
       json_dir = argv[++i];
     } else if (a == "--threads" && i + 1 < argc) {
-      ++i;  // each run gets its own
+      threads = std::atoi(argv[++i]);  // each run gets its own (--scaling), or this one (--runs)
     } else {
       rest.push_back(a);
     }
   }
-  if (!scaling) return std::nullopt;
-  if (counts.empty()) {
+  if (!scaling && runs == 0) return std::nullopt;
+  runs = std::max(runs, 1);
+  if (!scaling) {
+    counts = {threads};  // -1: the program's default (the hardware's threads)
+  } else if (counts.empty()) {
     const int hw = std::max(1, int(std::thread::hardware_concurrency()));
     for (int n = 1; n < hw; n *= 2) counts.push_back(n);
     counts.push_back(hw);
@@ -124,78 +179,166 @@ std::optional<int> run_scaling(int argc, char** argv) {
   const std::string program = std::filesystem::path(argv[0]).filename().string();
   struct Row {
     std::string name;
-    int threads;
+    int threads, run;
     double sl, lp, front, back, clear, front_busy, back_busy;
   };
   std::vector<Row> rows;
+  std::string simd_path;
   int status = 0;
-  for (int n : counts) {
-    std::string cmd = shell_quote(std::filesystem::read_symlink("/proc/self/exe").string()) + " --threads " +
-                      std::to_string(n);
-    for (const std::string& a : rest) cmd += " " + shell_quote(a);
-    if (!json_dir.empty())
-      cmd += " --benchmark_out=" + shell_quote(json_dir + "/" + program + "_t" + std::to_string(n) + ".json") +
-             " --benchmark_out_format=json";
-    std::printf("==== %s, %d thread(s)\n", program.c_str(), n);
-    std::fflush(stdout);
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return 1;
-    char line[4096];
-    while (std::fgets(line, sizeof line, p)) {
-      std::fputs(line, stdout);
-      if (std::strncmp(line, "@row ", 5) == 0) {
-        char name[256];
-        Row r{};
-        if (std::sscanf(line + 5, "%255s %d %lf %lf %lf %lf %lf %lf %lf", name, &r.threads, &r.sl, &r.lp, &r.front,
-                        &r.back, &r.clear, &r.front_busy, &r.back_busy) == 9) {
-          r.name = name;
-          rows.push_back(r);
+  // Run by run, every thread count in each, so that a slow phase of the machine touches all counts alike.
+  for (int run = 1; run <= runs; ++run) {
+    for (int n : counts) {
+      std::string cmd = shell_quote(std::filesystem::read_symlink("/proc/self/exe").string());
+      if (n >= 0) cmd += " --threads " + std::to_string(n);
+      for (const std::string& a : rest) {
+        cmd += ' ';
+        cmd += shell_quote(a);
+      }
+      std::string tag;
+      if (n >= 0) tag += "_t" + std::to_string(n);
+      if (runs > 1) tag += "_run" + std::to_string(run);
+      if (!json_dir.empty())
+        cmd += " --benchmark_out=" + shell_quote(json_dir + "/" + program + tag + ".json") +
+               " --benchmark_out_format=json";
+      const std::string count = n >= 0 ? std::to_string(n) + " thread(s)" : "default threads";
+      std::printf("==== %s, %s", program.c_str(), count.c_str());
+      if (runs > 1) std::printf(", run %d of %d", run, runs);
+      std::printf("\n");
+      std::fflush(stdout);
+      FILE* p = popen(cmd.c_str(), "r");
+      if (!p) return 1;
+      char line[4096];
+      while (std::fgets(line, sizeof line, p)) {
+        std::fputs(line, stdout);
+        if (std::strncmp(line, "@row ", 5) == 0) {
+          char name[256];
+          Row r{};
+          if (std::sscanf(line + 5, "%255s %d %lf %lf %lf %lf %lf %lf %lf", name, &r.threads, &r.sl, &r.lp,
+                          &r.front, &r.back, &r.clear, &r.front_busy, &r.back_busy) == 9) {
+            r.name = name;
+            r.run = run;
+            rows.push_back(r);
+          }
+        } else if (const char* sp = std::strstr(line, "SIMD path "); sp && simd_path.empty()) {
+          char isa[32];
+          if (std::sscanf(sp + 10, "%31[a-z0-9]", isa) == 1) simd_path = isa;
         }
       }
+      std::fflush(stdout);
+      if (pclose(p) != 0) status = 1;
     }
-    std::fflush(stdout);
-    if (pclose(p) != 0) status = 1;
   }
-  // Speed-up against each renderer's own time at the smallest count measured (1 thread unless LIST says otherwise).
   std::vector<std::string> names;
-  for (const Row& r : rows)
+  std::vector<int> measured;  // thread counts as the runs reported them
+  for (const Row& r : rows) {
     if (std::find(names.begin(), names.end(), r.name) == names.end()) names.push_back(r.name);
-  std::printf("\nScaling, %s (speed-up and efficiency against each renderer's time at %d thread(s)):\n",
-              program.c_str(), counts.front());
-  // "use": a phase's task time summed over workers / (threads × its wall time): how busy its workers were.
-  std::printf("%-18s %7s %11s %11s %7s %8s %6s %8s %6s %9s %9s %9s %9s %9s\n", "case", "threads", "shadowlab",
-              "llvmpipe", "ratio", "SL x", "SL eff", "LP x", "LP eff", "front ms", "front use", "back ms", "back use",
-              "clear cpu");
-  std::ostringstream json;
-  json << "{\n  \"program\": \"" << program << "\",\n  \"rows\": [";
-  bool first = true;
-  for (const std::string& name : names) {
-    const Row* base = nullptr;
+    if (std::find(measured.begin(), measured.end(), r.threads) == measured.end()) measured.push_back(r.threads);
+  }
+  auto rows_of = [&](const std::string& name, int t) {
+    std::vector<const Row*> out;
     for (const Row& r : rows)
-      if (r.name == name && !base) base = &r;
-    for (const Row& r : rows) {
-      if (r.name != name) continue;
-      const double t = std::max(r.threads, 1) / double(std::max(base->threads, 1));
-      const double sx = r.sl > 0 ? base->sl / r.sl : 0, lx = r.lp > 0 ? base->lp / r.lp : 0;
-      const int workers = std::max(r.threads, 1);
-      const double front_use = r.front > 0 ? r.front_busy / (workers * r.front) : 0;
-      const double back_use = r.back > 0 ? r.back_busy / (workers * r.back) : 0;
-      std::printf("%-18s %7d %9.2fms %9.2fms %6.2fx %7.2fx %6.2f %7.2fx %6.2f %9.2f %9.2f %9.2f %9.2f %9.2f\n",
-                  name.c_str(), r.threads, r.sl, r.lp, r.sl > 0 && r.lp > 0 ? r.lp / r.sl : 0.0, sx, sx / t, lx,
-                  lx / t, r.front, front_use, r.back, back_use, r.clear);
-      json << (first ? "" : ",") << "\n    {\"case\": \"" << name << "\", \"threads\": " << r.threads
-           << ", \"shadowlab_ms\": " << r.sl << ", \"llvmpipe_ms\": " << r.lp
-           << ", \"ratio\": " << (r.sl > 0 ? r.lp / r.sl : 0) << ", \"shadowlab_speedup\": " << sx
-           << ", \"shadowlab_efficiency\": " << sx / t << ", \"llvmpipe_speedup\": " << lx
-           << ", \"llvmpipe_efficiency\": " << lx / t << ", \"front_ms\": " << r.front
-           << ", \"back_ms\": " << r.back << ", \"clear_cpu_ms\": " << r.clear
-           << ", \"front_busy_ms\": " << r.front_busy << ", \"back_busy_ms\": " << r.back_busy
-           << ", \"front_use\": " << front_use << ", \"back_use\": " << back_use << "}";
-      first = false;
+      if (r.name == name && r.threads == t) out.push_back(&r);
+    return out;
+  };
+  // One row per case and count: each field the median over the runs (the run's own value with one run).
+  auto merged = [&](const std::string& name, int t) {
+    Row m{name, t, 0, 0, 0, 0, 0, 0, 0, 0};
+    const auto rs = rows_of(name, t);
+    auto med = [&](double Row::*f) {
+      std::vector<double> v;
+      for (const Row* r : rs) v.push_back(r->*f);
+      return median_of(v);
+    };
+    m.sl = med(&Row::sl), m.lp = med(&Row::lp), m.front = med(&Row::front), m.back = med(&Row::back);
+    m.clear = med(&Row::clear), m.front_busy = med(&Row::front_busy), m.back_busy = med(&Row::back_busy);
+    return m;
+  };
+  std::ostringstream json;
+  json << "{\n  \"program\": \"" << program << "\",\n  \"cpu\": \"" << cpu_line() << "\",\n  \"simd_path\": \""
+       << simd_path << "\",\n  \"runs\": " << runs << ",\n  \"rows\": [";
+  bool first = true;
+  if (scaling) {
+    // Speed-up against each renderer's own time at the smallest count measured (1 thread unless LIST says
+    // otherwise).
+    std::printf("\nScaling, %s (speed-up and efficiency against each renderer's time at %d thread(s)%s):\n",
+                program.c_str(), counts.front(), runs > 1 ? "; medians over the runs" : "");
+    // "use": a phase's task time summed over workers / (threads × its wall time): how busy its workers were.
+    std::printf("%-18s %7s %11s %11s %7s %8s %6s %8s %6s %9s %9s %9s %9s %9s\n", "case", "threads", "shadowlab",
+                "llvmpipe", "ratio", "SL x", "SL eff", "LP x", "LP eff", "front ms", "front use", "back ms",
+                "back use", "clear cpu");
+    for (const std::string& name : names) {
+      std::optional<Row> base;
+      for (int t : measured) {
+        if (rows_of(name, t).empty()) continue;
+        const Row r = merged(name, t);
+        if (!base) base = r;
+        const double tt = std::max(r.threads, 1) / double(std::max(base->threads, 1));
+        const double sx = r.sl > 0 ? base->sl / r.sl : 0, lx = r.lp > 0 ? base->lp / r.lp : 0;
+        const int workers = std::max(r.threads, 1);
+        const double front_use = r.front > 0 ? r.front_busy / (workers * r.front) : 0;
+        const double back_use = r.back > 0 ? r.back_busy / (workers * r.back) : 0;
+        std::printf("%-18s %7d %9.2fms %9.2fms %6.2fx %7.2fx %6.2f %7.2fx %6.2f %9.2f %9.2f %9.2f %9.2f %9.2f\n",
+                    name.c_str(), r.threads, r.sl, r.lp, r.sl > 0 && r.lp > 0 ? r.lp / r.sl : 0.0, sx, sx / tt, lx,
+                    lx / tt, r.front, front_use, r.back, back_use, r.clear);
+        json << (first ? "" : ",") << "\n    {\"case\": \"" << name << "\", \"threads\": " << r.threads
+             << ", \"shadowlab_ms\": " << r.sl << ", \"llvmpipe_ms\": " << r.lp
+             << ", \"ratio\": " << (r.sl > 0 ? r.lp / r.sl : 0) << ", \"shadowlab_speedup\": " << sx
+             << ", \"shadowlab_efficiency\": " << sx / tt << ", \"llvmpipe_speedup\": " << lx
+             << ", \"llvmpipe_efficiency\": " << lx / tt << ", \"front_ms\": " << r.front
+             << ", \"back_ms\": " << r.back << ", \"clear_cpu_ms\": " << r.clear
+             << ", \"front_busy_ms\": " << r.front_busy << ", \"back_busy_ms\": " << r.back_busy
+             << ", \"front_use\": " << front_use << ", \"back_use\": " << back_use << "}";
+        first = false;
+      }
     }
+  }
+  json << "\n  ],\n  \"each_run\": [";
+  first = true;
+  for (const Row& r : rows) {
+    json << (first ? "" : ",") << "\n    {\"case\": \"" << r.name << "\", \"threads\": " << r.threads
+         << ", \"run\": " << r.run << ", \"shadowlab_ms\": " << r.sl << ", \"llvmpipe_ms\": " << r.lp
+         << ", \"ratio\": " << (r.sl > 0 && r.lp > 0 ? r.lp / r.sl : 0) << ", \"front_ms\": " << r.front
+         << ", \"back_ms\": " << r.back << "}";
+    first = false;
   }
   json << "\n  ]\n}\n";
-  if (!json_dir.empty()) std::ofstream(json_dir + "/" + program + "_scaling.json") << json.str();
+  if (runs > 1) {
+    // Every run listed, as the README's tables quote them: each run's ratio of the two medians, their median,
+    // and the range of each renderer's per-run medians; Markdown, to paste as it is.
+    std::printf("\n%d runs of %s, %s, SIMD path %s (each run: the ratio of llvmpipe's median to shadowlab's in "
+                "that process):\n\n",
+                runs, program.c_str(), cpu_line().c_str(), simd_path.empty() ? "?" : simd_path.c_str());
+    std::printf("| case | threads | runs (ratio) | median | shadowlab ms | llvmpipe ms | front end / back end ms |\n");
+    std::printf("|---|---|---|---|---|---|---|\n");
+    for (const std::string& name : names)
+      for (int t : measured) {
+        const auto rs = rows_of(name, t);
+        if (rs.empty()) continue;
+        std::string each;
+        std::vector<double> ratio, sl, lp, front, back;
+        for (const Row* r : rs) {
+          char buf[32];
+          if (r->sl > 0 && r->lp > 0) {
+            std::snprintf(buf, sizeof buf, "%.2f", r->lp / r->sl);
+            ratio.push_back(r->lp / r->sl);
+            lp.push_back(r->lp);
+          } else {
+            std::snprintf(buf, sizeof buf, "—");
+          }
+          each += (each.empty() ? "" : " / ") + std::string(buf);
+          sl.push_back(r->sl), front.push_back(r->front), back.push_back(r->back);
+        }
+        char med[32] = "—";
+        if (!ratio.empty()) std::snprintf(med, sizeof med, "**%.2f×**", median_of(ratio));
+        const bool timed = *std::max_element(back.begin(), back.end()) > 0;
+        const std::string split = timed ? range_text(front) + " / " + range_text(back) : "—";
+        std::printf("| %s | %d | %s%s | %s | %s | %s | %s |\n", name.c_str(), t, each.c_str(),
+                    ratio.empty() ? "" : "×", med, range_text(sl).c_str(), lp.empty() ? "—" : range_text(lp).c_str(),
+                    split.c_str());
+      }
+  }
+  if (!json_dir.empty())
+    std::ofstream(json_dir + "/" + program + (scaling ? "_scaling.json" : "_runs.json")) << json.str();
   return status;
 }
 

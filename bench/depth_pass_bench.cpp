@@ -5,9 +5,10 @@
 // With --verify it first renders every case once with both and reports, per case, the pixels whose stored depth
 // differs (covered by one only, or any bit of the value) and a hash of shadowlab's map, then exits.
 // Each shadowlab repetition also reports where its draw's time went (counters front_ms, back_ms, clear_cpu_ms,
-// front_busy_ms, back_busy_ms, chunks in the JSON output: Renderer::last_timings). --scaling runs the whole program at 1, 2, 4, … threads (bench_common.h).
+// front_busy_ms, back_busy_ms, chunks in the JSON output: Renderer::last_timings). --scaling runs the whole program
+// at 1, 2, 4, … threads, --runs N runs it N times over and lists every run (bench_common.h).
 //   shadowlab_bench_depth [--threads N] [--smoke] [--no-llvmpipe] [--verify] [--repetitions R]
-//                         [--scaling [LIST]] [--json-dir DIR] [benchmark flags]
+//                         [--scaling [LIST]] [--runs N] [--json-dir DIR] [benchmark flags]
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

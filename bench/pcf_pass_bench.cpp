@@ -3,9 +3,10 @@
 // running the same GLSL (raster/reference: pixel (x, y) reads p = ((x+0.5)/W, (y+0.5)/H) with
 // ref = (p.s + p.t)/2, the taps at p + disk[i] · 2 texels, averaged; output grey). A third pass with no lookup (grey = ref) shows what
 // the pipeline itself costs each renderer: rasterizing, shading 2×2 quads and writing RGBA8.
-// --scaling runs the whole program at 1, 2, 4, … threads (bench_common.h).
+// --scaling runs the whole program at 1, 2, 4, … threads, --runs N runs it N times over and lists every run
+// (bench_common.h).
 //   shadowlab_bench_pcf [--threads N] [--smoke] [--no-llvmpipe] [--repetitions R] [--scaling [LIST]]
-//                       [--json-dir DIR] [benchmark flags]
+//                       [--runs N] [--json-dir DIR] [benchmark flags]
 #include <benchmark/benchmark.h>
 
 #include <chrono>
