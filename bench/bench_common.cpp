@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -14,6 +15,8 @@
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include <sys/wait.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -124,8 +127,9 @@ double median_of(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// "a–b" with two decimals, or one value where both read the same.
+// "a–b" with two decimals, or one value where both read the same; "—" for none.
 std::string range_text(const std::vector<double>& v) {
+  if (v.empty()) return "—";
   const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
   char a[32], b[32];
   std::snprintf(a, sizeof a, "%.2f", *lo);
@@ -133,32 +137,44 @@ std::string range_text(const std::vector<double>& v) {
   return std::strcmp(a, b) == 0 ? std::string(a) : std::string(a) + "–" + b;
 }
 
+// A JSON string literal.
+std::string json_string(const std::string& v) {
+  std::string out = "\"";
+  for (const char c : v) {
+    if (c == '"' || c == '\\') out += '\\', out += c;
+    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
+    else out += c;
+  }
+  return out + "\"";
+}
+
 }  // namespace
 
 std::optional<int> run_scaling(int argc, char** argv) {
-  bool scaling = false;
-  int runs = 0;  // 0: no --runs
+  bool scaling = false, runs_given = false;
+  int runs = 1;
   int threads = -1;
   std::vector<int> counts;
   std::string json_dir;
   std::vector<std::string> rest;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--scaling") {
+    if (a == "--scaling" || a.rfind("--scaling=", 0) == 0) {
       scaling = true;
-      if (i + 1 < argc && std::isdigit(static_cast<unsigned char>(argv[i + 1][0]))) {
-        std::stringstream list(argv[++i]);
-        for (std::string n; std::getline(list, n, ',');) counts.push_back(std::max(0, std::atoi(n.c_str())));
-      }
-    } else if (a == "--runs") {
-      const char* v = i + 1 < argc ? argv[++i] : "";
+      std::string list_text;
+      if (a != "--scaling") list_text = a.substr(10);
+      else if (i + 1 < argc && std::isdigit(static_cast<unsigned char>(argv[i + 1][0]))) list_text = argv[++i];
+      std::stringstream list(list_text);
+      for (std::string n; std::getline(list, n, ',');) counts.push_back(std::max(0, std::atoi(n.c_str())));
+    } else if (a == "--runs" || a.rfind("--runs=", 0) == 0) {
+      const std::string v = a != "--runs" ? a.substr(7) : i + 1 < argc ? argv[++i] : "";
       char* end = nullptr;
-      const long n = std::strtol(v, &end, 10);
-      if (*v == '\0' || *end != '\0' || n < 1 || n > 1000) {
-        std::fprintf(stderr, "--runs: expected a whole number of runs from 1 to 1000, got '%s'\n", v);
+      const long n = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end != '\0' || n < 1 || n > 1000) {
+        std::fprintf(stderr, "--runs: expected a whole number of runs from 1 to 1000, got '%s'\n", v.c_str());
         return 2;
       }
-      runs = int(n);
+      runs = int(n), runs_given = true;
     } else if (a == "--json-dir" && i + 1 < argc) {
       json_dir = argv[++i];
     } else if (a == "--threads" && i + 1 < argc) {
@@ -167,8 +183,7 @@ std::optional<int> run_scaling(int argc, char** argv) {
       rest.push_back(a);
     }
   }
-  if (!scaling && runs == 0) return std::nullopt;
-  runs = std::max(runs, 1);
+  if (!scaling && !runs_given) return std::nullopt;
   if (!scaling) {
     counts = {threads};  // -1: the program's default (the hardware's threads)
   } else if (counts.empty()) {
@@ -183,8 +198,8 @@ std::optional<int> run_scaling(int argc, char** argv) {
     double sl, lp, front, back, clear, front_busy, back_busy;
   };
   std::vector<Row> rows;
+  std::vector<std::string> failed;  // "run R, N thread(s): exit X", one per process that did not end well
   std::string simd_path;
-  int status = 0;
   // Run by run, every thread count in each, so that a slow phase of the machine touches all counts alike.
   for (int run = 1; run <= runs; ++run) {
     for (int n : counts) {
@@ -196,17 +211,21 @@ std::optional<int> run_scaling(int argc, char** argv) {
       }
       std::string tag;
       if (n >= 0) tag += "_t" + std::to_string(n);
-      if (runs > 1) tag += "_run" + std::to_string(run);
+      if (runs_given) tag += "_run" + std::to_string(run);
       if (!json_dir.empty())
         cmd += " --benchmark_out=" + shell_quote(json_dir + "/" + program + tag + ".json") +
                " --benchmark_out_format=json";
       const std::string count = n >= 0 ? std::to_string(n) + " thread(s)" : "default threads";
+      const std::string what = (runs_given ? "run " + std::to_string(run) + ", " : std::string()) + count;
       std::printf("==== %s, %s", program.c_str(), count.c_str());
-      if (runs > 1) std::printf(", run %d of %d", run, runs);
+      if (runs_given) std::printf(", run %d of %d", run, runs);
       std::printf("\n");
       std::fflush(stdout);
       FILE* p = popen(cmd.c_str(), "r");
-      if (!p) return 1;
+      if (!p) {
+        failed.push_back(what + ": could not be started (" + std::strerror(errno) + ")");
+        continue;
+      }
       char line[4096];
       while (std::fgets(line, sizeof line, p)) {
         std::fputs(line, stdout);
@@ -225,15 +244,20 @@ std::optional<int> run_scaling(int argc, char** argv) {
         }
       }
       std::fflush(stdout);
-      if (pclose(p) != 0) status = 1;
+      const int st = pclose(p);
+      if (st != 0)
+        failed.push_back(what + ": " + (WIFEXITED(st) ? "exit " + std::to_string(WEXITSTATUS(st))
+                                                       : "ended by signal " + std::to_string(WTERMSIG(st))));
     }
   }
   std::vector<std::string> names;
-  std::vector<int> measured;  // thread counts as the runs reported them
-  for (const Row& r : rows) {
+  std::vector<int> measured;  // thread counts, in the order asked for (those that reported rows)
+  for (const Row& r : rows)
     if (std::find(names.begin(), names.end(), r.name) == names.end()) names.push_back(r.name);
-    if (std::find(measured.begin(), measured.end(), r.threads) == measured.end()) measured.push_back(r.threads);
-  }
+  for (int n : counts)
+    for (const Row& r : rows)
+      if ((n < 0 || r.threads == n) && std::find(measured.begin(), measured.end(), r.threads) == measured.end())
+        measured.push_back(r.threads);
   auto rows_of = [&](const std::string& name, int t) {
     std::vector<const Row*> out;
     for (const Row& r : rows)
@@ -254,14 +278,17 @@ std::optional<int> run_scaling(int argc, char** argv) {
     return m;
   };
   std::ostringstream json;
-  json << "{\n  \"program\": \"" << program << "\",\n  \"cpu\": \"" << cpu_line() << "\",\n  \"simd_path\": \""
-       << simd_path << "\",\n  \"runs\": " << runs << ",\n  \"rows\": [";
+  json << "{\n  \"program\": " << json_string(program) << ",\n  \"cpu\": " << json_string(cpu_line())
+       << ",\n  \"simd_path\": " << json_string(simd_path) << ",\n  \"runs\": " << runs << ",\n  \"failed\": [";
+  for (size_t i = 0; i < failed.size(); ++i) json << (i ? ", " : "") << json_string(failed[i]);
+  json << "],\n  \"rows\": [";
   bool first = true;
   if (scaling) {
     // Speed-up against each renderer's own time at the smallest count measured (1 thread unless LIST says
     // otherwise).
     std::printf("\nScaling, %s (speed-up and efficiency against each renderer's time at %d thread(s)%s):\n",
-                program.c_str(), counts.front(), runs > 1 ? "; medians over the runs" : "");
+                program.c_str(), measured.empty() ? counts.front() : measured.front(),
+                runs > 1 ? "; every time the median over the runs, the ratio that of those medians" : "");
     // "use": a phase's task time summed over workers / (threads × its wall time): how busy its workers were.
     std::printf("%-18s %7s %11s %11s %7s %8s %6s %8s %6s %9s %9s %9s %9s %9s\n", "case", "threads", "shadowlab",
                 "llvmpipe", "ratio", "SL x", "SL eff", "LP x", "LP eff", "front ms", "front use", "back ms",
@@ -280,7 +307,7 @@ std::optional<int> run_scaling(int argc, char** argv) {
         std::printf("%-18s %7d %9.2fms %9.2fms %6.2fx %7.2fx %6.2f %7.2fx %6.2f %9.2f %9.2f %9.2f %9.2f %9.2f\n",
                     name.c_str(), r.threads, r.sl, r.lp, r.sl > 0 && r.lp > 0 ? r.lp / r.sl : 0.0, sx, sx / tt, lx,
                     lx / tt, r.front, front_use, r.back, back_use, r.clear);
-        json << (first ? "" : ",") << "\n    {\"case\": \"" << name << "\", \"threads\": " << r.threads
+        json << (first ? "" : ",") << "\n    {\"case\": " << json_string(name) << ", \"threads\": " << r.threads
              << ", \"shadowlab_ms\": " << r.sl << ", \"llvmpipe_ms\": " << r.lp
              << ", \"ratio\": " << (r.sl > 0 ? r.lp / r.sl : 0) << ", \"shadowlab_speedup\": " << sx
              << ", \"shadowlab_efficiency\": " << sx / tt << ", \"llvmpipe_speedup\": " << lx
@@ -295,19 +322,23 @@ std::optional<int> run_scaling(int argc, char** argv) {
   json << "\n  ],\n  \"each_run\": [";
   first = true;
   for (const Row& r : rows) {
-    json << (first ? "" : ",") << "\n    {\"case\": \"" << r.name << "\", \"threads\": " << r.threads
+    json << (first ? "" : ",") << "\n    {\"case\": " << json_string(r.name) << ", \"threads\": " << r.threads
          << ", \"run\": " << r.run << ", \"shadowlab_ms\": " << r.sl << ", \"llvmpipe_ms\": " << r.lp
          << ", \"ratio\": " << (r.sl > 0 && r.lp > 0 ? r.lp / r.sl : 0) << ", \"front_ms\": " << r.front
          << ", \"back_ms\": " << r.back << "}";
     first = false;
   }
-  json << "\n  ]\n}\n";
-  if (runs > 1) {
+  json << "\n  ],\n  \"summary\": [";
+  first = true;
+  if (runs_given) {
     // Every run listed, as the README's tables quote them: each run's ratio of the two medians, their median,
     // and the range of each renderer's per-run medians; Markdown, to paste as it is.
-    std::printf("\n%d runs of %s, %s, SIMD path %s (each run: the ratio of llvmpipe's median to shadowlab's in "
-                "that process):\n\n",
-                runs, program.c_str(), cpu_line().c_str(), simd_path.empty() ? "?" : simd_path.c_str());
+    bool any_llvmpipe = false;
+    for (const Row& r : rows) any_llvmpipe |= r.lp > 0;
+    std::printf("\n%d run(s) of %s, %s, SIMD path %s (each run: the ratio of llvmpipe's median time to "
+                "shadowlab's in that process%s):\n\n",
+                runs, program.c_str(), cpu_line().c_str(), simd_path.empty() ? "?" : simd_path.c_str(),
+                any_llvmpipe ? "" : "; llvmpipe did not run, so there are no ratios");
     std::printf("| case | threads | runs (ratio) | median | shadowlab ms | llvmpipe ms | front end / back end ms |\n");
     std::printf("|---|---|---|---|---|---|---|\n");
     for (const std::string& name : names)
@@ -317,29 +348,48 @@ std::optional<int> run_scaling(int argc, char** argv) {
         std::string each;
         std::vector<double> ratio, sl, lp, front, back;
         for (const Row* r : rs) {
-          char buf[32];
+          char buf[32] = "—";
           if (r->sl > 0 && r->lp > 0) {
             std::snprintf(buf, sizeof buf, "%.2f", r->lp / r->sl);
             ratio.push_back(r->lp / r->sl);
-            lp.push_back(r->lp);
-          } else {
-            std::snprintf(buf, sizeof buf, "—");
           }
           each += (each.empty() ? "" : " / ") + std::string(buf);
-          sl.push_back(r->sl), front.push_back(r->front), back.push_back(r->back);
+          if (r->sl > 0) sl.push_back(r->sl), front.push_back(r->front), back.push_back(r->back);
+          if (r->lp > 0) lp.push_back(r->lp);
         }
         char med[32] = "—";
         if (!ratio.empty()) std::snprintf(med, sizeof med, "**%.2f×**", median_of(ratio));
-        const bool timed = *std::max_element(back.begin(), back.end()) > 0;
+        const bool timed = !back.empty() && *std::max_element(back.begin(), back.end()) > 0;
         const std::string split = timed ? range_text(front) + " / " + range_text(back) : "—";
         std::printf("| %s | %d | %s%s | %s | %s | %s | %s |\n", name.c_str(), t, each.c_str(),
-                    ratio.empty() ? "" : "×", med, range_text(sl).c_str(), lp.empty() ? "—" : range_text(lp).c_str(),
-                    split.c_str());
+                    ratio.empty() ? "" : "×", med, range_text(sl).c_str(), range_text(lp).c_str(), split.c_str());
+        json << (first ? "" : ",") << "\n    {\"case\": " << json_string(name) << ", \"threads\": " << t
+             << ", \"runs\": " << rs.size() << ", \"ratios\": [";
+        for (size_t i = 0; i < ratio.size(); ++i) json << (i ? ", " : "") << ratio[i];
+        json << "], \"median_ratio\": " << median_of(ratio);
+        auto min_max = [&](const char* key, const std::vector<double>& v) {
+          if (v.empty()) return;
+          const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+          json << ", \"" << key << "_min\": " << *lo << ", \"" << key << "_max\": " << *hi;
+        };
+        min_max("shadowlab_ms", sl), min_max("llvmpipe_ms", lp);
+        json << "}";
+        first = false;
       }
+    if (!failed.empty()) std::printf("\n");
+    for (const std::string& f : failed) std::printf("Failed: %s (its rows are missing above)\n", f.c_str());
   }
-  if (!json_dir.empty())
-    std::ofstream(json_dir + "/" + program + (scaling ? "_scaling.json" : "_runs.json")) << json.str();
-  return status;
+  json << "\n  ]\n}\n";
+  if (!json_dir.empty()) {
+    const std::string path = json_dir + "/" + program + (scaling ? "_scaling.json" : "_runs.json");
+    std::ofstream out(path);
+    out << json.str();
+    if (!out.flush()) {
+      std::fprintf(stderr, "%s: cannot write the collected rows to %s\n", program.c_str(), path.c_str());
+      return 1;
+    }
+  }
+  return failed.empty() ? 0 : 1;
 }
 
 std::filesystem::path assets_dir() {

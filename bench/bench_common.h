@@ -27,13 +27,15 @@ struct Options {
 // ratio, and each renderer's speed-up over its own 1-thread time and parallel efficiency (speed-up / threads).
 // --json-dir DIR also writes each run's Google Benchmark JSON (DIR/<program>_t<N>.json) and the table
 // (DIR/<program>_scaling.json).
-// --runs N (1 … 1000): runs the program N times over, each a process of its own (with --scaling, every count in
-// each run, run after run), and ends with a Markdown table of every case: each run's ratio of llvmpipe's median to
-// shadowlab's, the median of those ratios, the range of each renderer's per-run medians and of shadowlab's front end
-// and back end, under a line naming the CPU and the SIMD path; with --scaling the scaling table then takes each
-// field's median over the runs. --json-dir DIR writes each run's JSON as <program>[_t<N>]_run<R>.json and the
-// collected rows as DIR/<program>_runs.json (or _scaling.json). A bad --runs value is one line on stderr and exit
-// code 2. Returns the exit code when --scaling or --runs was given, nullopt otherwise.
+// --runs N (or --runs=N, 1 … 1000): runs the program N times over, each a process of its own (with --scaling,
+// every count in each run, run after run), and ends with a Markdown table of every case and count: each run's
+// ratio of llvmpipe's median time to shadowlab's, the median of those ratios, the range of each renderer's
+// per-run medians and of shadowlab's front end and back end, under a line naming the CPU and the SIMD path, and a
+// "Failed:" line for each run that did not exit 0 (the exit code is then 1); with --scaling the scaling table then
+// takes each time's median over the runs. --json-dir DIR writes each run's JSON as <program>[_t<N>]_run<R>.json and
+// the collected rows (each run's, the table's summary, the failed runs) as DIR/<program>_runs.json (or
+// _scaling.json). A bad --runs value is one line on stderr and exit code 2. Returns the exit code when --scaling
+// or --runs was given, nullopt otherwise.
 std::optional<int> run_scaling(int argc, char** argv);
 // What a program prints per case for run_scaling to collect: the medians of "<case>/shadowlab" and
 // "<case>/llvmpipe" in ms, and of shadowlab's draw split (the counters record_draw_timings sets); nothing for a
