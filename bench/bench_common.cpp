@@ -95,9 +95,6 @@ std::string shell_quote(const std::string& a) {
   for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
 }
-}  // namespace
-
-namespace {
 
 // The first processor's "model name", "cpu family" and "model" lines of /proc/cpuinfo, and the logical CPUs, as
 // one line ("AMD EPYC (family 25, model 17), 2 logical CPUs"); what the system does not say is left out.

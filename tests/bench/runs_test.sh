@@ -39,8 +39,9 @@ grep -q '"failed": \[\]' "$tmp/shadowlab_bench_depth_runs.json" || fail "collect
 out=$("$depth" --smoke --no-llvmpipe --threads 1 --runs=1 2>&1 | strip) || fail "depth --runs=1: $out"
 grep -q "^| b_large_2000px | 1 | — | — | [0-9.]* | — | " <<<"$out" || fail "--runs=1 gives no table: $out"
 
-# Runs that fail (here their JSON cannot be written) are named, and the exit code says so.
-out=$("$depth" --smoke --no-llvmpipe --threads 2 --runs 2 --json-dir "$tmp/missing/dir" 2>&1 | strip)
+# Runs that fail (here each run's own JSON cannot be written; no --json-dir, so the collected file is not what
+# fails) are named, and the exit code says so.
+out=$("$depth" --smoke --no-llvmpipe --threads 2 --runs 2 --benchmark_out="$tmp/missing/dir/out.json" 2>&1 | strip)
 rc=$?
 [ $rc -eq 1 ] || fail "failing runs: exit $rc, not 1"
 for r in 1 2; do
