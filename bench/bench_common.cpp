@@ -172,8 +172,12 @@ std::optional<int> run_scaling(int argc, char** argv) {
         return 2;
       }
       runs = int(n), runs_given = true;
-    } else if (a == "--json-dir" && i + 1 < argc) {
-      json_dir = argv[++i];
+    } else if (a == "--json-dir" || a.rfind("--json-dir=", 0) == 0) {
+      json_dir = a != "--json-dir" ? a.substr(11) : i + 1 < argc ? argv[++i] : "";
+      if (json_dir.empty()) {
+        std::fprintf(stderr, "--json-dir: expected a directory\n");
+        return 2;
+      }
     } else if (a == "--threads" && i + 1 < argc) {
       threads = std::atoi(argv[++i]);  // each run gets its own (--scaling), or this one (--runs)
     } else {
@@ -189,6 +193,15 @@ std::optional<int> run_scaling(int argc, char** argv) {
     counts.push_back(hw);
   }
   const std::string program = std::filesystem::path(argv[0]).filename().string();
+  if (!json_dir.empty()) {  // made here, once: else every run would fail on its own --benchmark_out
+    std::error_code ec;
+    std::filesystem::create_directories(json_dir, ec);
+    if (ec || !std::filesystem::is_directory(json_dir)) {
+      std::fprintf(stderr, "--json-dir: cannot make the directory '%s' (%s)\n", json_dir.c_str(),
+                   ec ? ec.message().c_str() : "a file of that name is in the way");
+      return 2;
+    }
+  }
   struct Row {
     std::string name;
     int threads, run;

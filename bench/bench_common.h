@@ -34,7 +34,8 @@ struct Options {
 // "Failed:" line for each run that did not exit 0 (the exit code is then 1); with --scaling the scaling table then
 // takes each time's median over the runs. --json-dir DIR writes each run's JSON as <program>[_t<N>]_run<R>.json and
 // the collected rows (each run's, the table's summary, the failed runs) as DIR/<program>_runs.json (or
-// _scaling.json). A bad --runs value is one line on stderr and exit code 2. Returns the exit code when --scaling
+// _scaling.json); DIR (also --json-dir=DIR) is made if missing. A bad --runs value, a missing --json-dir value or
+// a DIR that cannot be made is one line on stderr and exit code 2. Returns the exit code when --scaling
 // or --runs was given, nullopt otherwise.
 std::optional<int> run_scaling(int argc, char** argv);
 // What a program prints per case for run_scaling to collect: the medians of "<case>/shadowlab" and

@@ -35,6 +35,21 @@ for c in a_small_10px b_large_2000px; do
 done
 grep -q '"failed": \[\]' "$tmp/shadowlab_bench_depth_runs.json" || fail "collected JSON names failed runs"
 
+# --json-dir names a directory not made yet: it is made (and its parents), in either form; a file in the way or
+# no value is one line and exit code 2, before any run.
+out=$("$depth" --smoke --no-llvmpipe --threads 1 --runs 1 --benchmark_filter=b_large --json-dir="$tmp/new/sub" 2>&1 | strip) ||
+  fail "--json-dir=DIR not made yet: $out"
+[ -s "$tmp/new/sub/shadowlab_bench_depth_t1_run1.json" ] && [ -s "$tmp/new/sub/shadowlab_bench_depth_runs.json" ] ||
+  fail "--json-dir=DIR not made yet: no JSON in it: $(ls -R "$tmp/new" 2>&1)"
+: >"$tmp/plainfile"
+for args in "--json-dir $tmp/plainfile/x" "--json-dir" "--json-dir="; do
+  err=$("$depth" --smoke --no-llvmpipe --runs 1 $args 2>&1 >"$tmp/stdout")
+  rc=$?
+  [ $rc -eq 2 ] || fail "$args: exit $rc, not 2"
+  [ "$(wc -l <<<"$err")" = 1 ] && grep -q "^--json-dir: " <<<"$err" || fail "$args: $err"
+  [ ! -s "$tmp/stdout" ] || fail "$args started runs: $(cat "$tmp/stdout")"
+done
+
 # One run, written --runs=1: still the table.
 out=$("$depth" --smoke --no-llvmpipe --threads 1 --runs=1 2>&1 | strip) || fail "depth --runs=1: $out"
 grep -q "^| b_large_2000px | 1 | — | — | [0-9.]* | — | " <<<"$out" || fail "--runs=1 gives no table: $out"
