@@ -5,10 +5,10 @@
 // wholly inside the map (the kernels' short paths) and groups with a single lane outside it, in every lane
 // position of sixteen; groups of eight neighbouring footprints (the sixteen-lane window path) up to and one texel
 // past the window's 8 × 4 texels and the map's last column and row; and several sixteen-lane lookups handed over
-// at once (PcfKernel's batch form, pcf_lequal_x16_n), some of them leaving the window path; and maps that end
-// where an unreadable page begins, so that any read past the last texel faults. The test binary is
-// built for the first instruction set of SHADOWLAB_ISAS: the sixteen-lane kernel's AVX-512 form (and the batch's)
-// is what a build configured with SHADOWLAB_ISAS=avx512 tests, on a CPU that has it.
+// at once (PcfKernel's batch form, pcf_lequal_x16_n), some of them leaving the window path; maps that end where
+// an unreadable page begins, so that any read past the last texel faults; and rows 2^15 texels apart or more.
+// The test binary is built for the first instruction set of SHADOWLAB_ISAS: the sixteen-lane kernel's AVX-512
+// form (and the batch's) is what a build configured with SHADOWLAB_ISAS=avx512 tests, on a CPU that has it.
 #include <gtest/gtest.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -254,6 +254,35 @@ TEST(PcfSimd, KernelsNeverReadPastTheMap) {
         case TexelFormat::d16: check_format<TexelFormat::d16>(map.level(), rng, "d16 guarded"); break;
         case TexelFormat::d24: check_format<TexelFormat::d24>(map.level(), rng, "d24 guarded"); break;
         default: check_format<TexelFormat::d32f>(map.level(), rng, "d32f guarded"); break;
+      }
+    }
+  }
+}
+
+// Rows 2^15 − 1, 2^15 and 40000 texels apart (a level as plain data, row_bytes beyond any map's or target's):
+// the short path computes its pair offsets with 16-bit multiplies, which hold for a pitch below 2^15 only, so a
+// level with a wider pitch must take the full path and still equal the scalar kernel.
+TEST(PcfSimd, KernelsHandleRowPitchesAroundSixteenBits) {
+  std::mt19937 rng(2718);
+  std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+  const int w = 12, h = 6;
+  for (size_t pitch : {size_t(32767), size_t(32768), size_t(40000)}) {
+    for (TexelFormat f : {TexelFormat::d16, TexelFormat::d24, TexelFormat::d32f}) {
+      const size_t bpt = f == TexelFormat::d16 ? 2 : 4;
+      std::vector<std::byte> storage(size_t(h - 1) * pitch * bpt + size_t(w) * bpt);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          std::byte* p = storage.data() + (size_t(y) * pitch + size_t(x)) * bpt;
+          const float z = depth(rng);
+          if (f == TexelFormat::d16) *reinterpret_cast<uint16_t*>(p) = uint16_t(z * 65535.0f);
+          if (f == TexelFormat::d24) *reinterpret_cast<uint32_t*>(p) = uint32_t(z * 16777215.0f) | 0xAB000000u;
+          if (f == TexelFormat::d32f) *reinterpret_cast<float*>(p) = z;
+        }
+      const shading::TextureLevel L{storage.data(), pitch * bpt, w, h, float(w), float(h)};
+      switch (f) {
+        case TexelFormat::d16: check_format<TexelFormat::d16>(L, rng, "d16 wide pitch"); break;
+        case TexelFormat::d24: check_format<TexelFormat::d24>(L, rng, "d24 wide pitch"); break;
+        default: check_format<TexelFormat::d32f>(L, rng, "d32f wide pitch"); break;
       }
     }
   }
