@@ -1,7 +1,7 @@
 // Primitive assembly eight triangles at a time, for the front end of a depth-only draw: each triangle's three
 // vertex indices and the view-volume test on their outcodes, as lane masks. The front end's loop one triangle at
-// a time (renderer.h) defines the outcome; a group this cannot decide alone (an index out of range, which that
-// loop reports by position) is left to it.
+// a time (chunk_front_end.h) defines the outcome; a group this cannot decide alone (an index out of range, which
+// that loop reports by position) is left to it.
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -16,8 +16,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "raster/assembly.h"
+#include "raster/binned_chunk.h"
 #include "raster/bins.h"
+#include "raster/chunk_front_end.h"
 #include "raster/clip.h"
 #include "raster/coverage.h"
 #include "raster/depth_setup.h"
@@ -28,11 +29,13 @@
 #include "raster/interpolation.h"
 #include "raster/scratch.h"
 #include "raster/setup.h"
+#include "raster/prefetch.h"
 #include "raster/setup_batch.h"
 #include "raster/shader.h"
 #include "raster/state.h"
 #include "raster/target.h"
 #include "raster/thread_pool.h"
+#include "raster/tile_execution.h"
 #include "raster/vertex_batch.h"
 #include "raster/simd/isa.h"
 
@@ -57,11 +60,6 @@ struct DrawTimings {
   size_t chunks = 0;  // front-end chunks the draw was split into
 };
 
-// Invalid draw input (an index out of range, mismatched targets, a bad viewport). The message says which.
-struct DrawError : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
-};
-
 class Renderer {
  public:
   // threads < 0: the hardware's; 0: everything inline on the calling thread.
@@ -78,21 +76,6 @@ class Renderer {
                  std::span<const typename Shader::Vertex> vertices, std::span<const uint32_t> indices = {});
 
  private:
-  // The front end's output for one chunk of consecutive triangles.
-  struct Chunk {
-    // The visible triangles, binned: TriangleSetup for shaded draws, DepthSetup for depth-only draws (whose
-    // triangles too wide for it keep their TriangleSetup in `full`).
-    ChunkBins<TriangleSetup> bins;
-    ChunkBins<DepthSetup> depth_bins;
-    ScratchBuffer full;
-    size_t full_count = 0;
-    ScratchBuffer interps;  // TriangleInterp<Varyings>, shaded draws only
-    bool pending = true;    // the front end has still to run, with the draw's vertices
-    uint32_t range_lo = 0, range_hi = 0;  // depth-only draws: the smallest and largest vertex index the chunk uses
-    size_t interp_count = 0;
-    DrawStats stats;
-  };
-
   // What a chunk's front end needs only while its task runs, kept per worker (ThreadPool::parallel_for_workers)
   // and reused from one chunk to the next: the set-up records until they are binned, and a depth-only chunk's
   // outcodes and window vertices of its vertex range. Per chunk, a draw of 10^6 small triangles spread these
@@ -111,19 +94,11 @@ class Renderer {
   ThreadPool pool_;
   DrawTimings timings_;
   ScratchBuffer post_, win_, codes_;
-  std::vector<std::unique_ptr<Chunk>> chunks_;
+  std::vector<std::unique_ptr<BinnedChunk>> chunks_;  // kept from draw to draw, with their memory
   std::vector<std::unique_ptr<WorkerScratch>> workers_;  // one per pool worker
 };
 
 namespace detail {
-
-// One callable made of several lambdas, each serving the calls its parameters take.
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-template <class... F>
-Overloaded(F...) -> Overloaded<F...>;  // spelled out: clang 14 (the fuzzers' compiler) deduces no aggregate
 
 inline constexpr size_t kVertexBatch = 8192;
 // The front end splits a draw into chunks of consecutive triangles, at least kChunksPerWorker per worker so that
@@ -133,7 +108,6 @@ inline constexpr size_t kVertexBatch = 8192;
 inline constexpr size_t kMaxChunkTriangles = 8192;
 inline constexpr size_t kMinChunkTriangles = 256;
 inline constexpr size_t kChunksPerWorker = 4;
-inline constexpr unsigned kInvalidVertex = 1u << 31;
 // A depth-only draw whose triangles, counted as submitted, would take at least this many bytes of one-line
 // records (ntri × sizeof(DepthSetup)) bins them with non-temporal stores (ChunkBins::bin): its records are out
 // of the caches by the time the tiles read them anyway, and the scatter over every tile's slice no longer reads
@@ -141,51 +115,6 @@ inline constexpr unsigned kInvalidVertex = 1u << 31;
 // end of 10^6 triangles of ~10 px 53-63 -> 37-45 ms, of 2·10^4 of ~2000 px 3.0-3.3 -> 1.8-2.0 ms, the back ends
 // unchanged within the noise. Smaller draws keep cached records.
 inline constexpr size_t kStreamBinsBytes = size_t(1) << 20;
-// Tile execution reads each tile's slice of a chunk's records in order, and those of a large draw come from
-// memory (they were streamed there, see above); the dragon's back end stalled on each record's first field (13 %
-// of its samples), presumably because a slice is often too short for the hardware's stream prefetcher to catch
-// up. So the back end asks for the record this many places ahead as it takes each one (records of a triangle too
-// wide for a DepthSetup, read from the chunk's side array, are not prefetched). Measured on the
-// 2-core AMD EPYC (Zen 5), AVX-512 path, shadowlab alone at 2 threads, five runs each alternating: back end of
-// (a) 12.2–14.3 → 10.9–11.1 ms, (c) 11.6–11.8 → 11.1–11.6 ms, (b) 8.8–8.9 → 8.6–8.7 ms; 4 ahead measured about
-// the same ((a) 11.1–11.4 ms).
-inline constexpr size_t kBinPrefetch = 8;
-// A depth-only draw whose vertices are shaded once for the whole draw (a mesh whose chunks share vertices) reads
-// each triangle's outcodes and window vertices at the mesh's indices, from arrays larger than the L2 cache and in
-// an order no hardware prefetcher follows (the dragon's 871k triangles: 10.5 MB of window vertices, each chunk's
-// indices spanning 165k vertices on average). So the batched front end asks for the outcodes and window vertices
-// of the triangles this many places ahead as it assembles each group of eight. Measured on the 2-core AMD EPYC of
-// the Zen 4 generation, AVX-512 path, shadowlab alone at 2 threads (2026-11-30, four to six rounds alternating,
-// 15 repetitions each): the dragon's front end 9.36–9.73 → 8.86–9.06 ms (window vertices alone 9.18–9.34 ms); 8
-// places ahead 9.00–9.08 ms, 32 and 64 like 16. Draws whose chunks shade their own vertices (soups) do not ask:
-// theirs are in the chunk's small buffers, and asking cost the 10^6 small triangles' front end about 5 %.
-inline constexpr size_t kVertexPrefetch = 16;
-// Asks for the cache line holding `address`, given as an integer: the address may lie past any array (a prefetch
-// never faults), where forming a pointer to it would not be allowed.
-inline void prefetch_address(uintptr_t address) { __builtin_prefetch(reinterpret_cast<const void*>(address), 0, 3); }
-
-// The lines of the depth tile a worker will likely clear next. A tile's clear (DepthTarget::fill_tile) is 16 KB
-// of stores (d32f) in 64 rows a pitch apart, each store waiting for its line to come from memory, more lines than
-// a core keeps in flight: on the 2-core Intel Xeon (family 6, model 167) the clear took 3.8 of the 18 ms of
-// worker time of a draw of 2·10^4 triangles of 2,000 px. Workers mostly run tiles in index order (the pool hands
-// out ranges of indices), so while a worker executes a cleared tile's records it asks for the next tile's rows,
-// spread over the records (one row each, or more when the tile has fewer than 64), the records' work hiding the
-// wait; a guess that misses costs only the lines asked for. Same bits. Measured on that Xeon, AVX-512 path, 2
-// threads beside llvmpipe (bench/depth_pass_bench.cpp, five runs each): the clear's worker time 3.75–3.90 →
-// 0.20–0.21 ms for those triangles, 3.22–3.38 → 0.27–0.30 ms for 10^6 triangles of 10 px, 1.94–2.07 → 1.04–1.11
-// ms for the dragon (its empty tiles' clears run without records to hide them); see docs/performance-log.md.
-struct NextTileRows {
-  uintptr_t at = 0;   // the next row's first byte
-  size_t pitch = 0;   // bytes from one row to the next
-  int lines = 0;      // cache lines in a tile's row
-  int left = 0;       // rows not asked for yet
-  int per_record = 1;  // rows asked for per record: all of them over the tile's first 64 records or fewer
-  void ask_rows() {
-    for (int r = std::min(per_record, left); r > 0; --r, --left, at += pitch)
-      for (int l = 0; l < lines; ++l) prefetch_address(at + uintptr_t(64 * l));
-  }
-};
-
 inline size_t chunk_triangles(size_t ntri, int threads) {
   const size_t chunks = kChunksPerWorker * size_t(std::max(threads, 1));
   return std::clamp((ntri + chunks - 1) / chunks, kMinChunkTriangles, kMaxChunkTriangles);
@@ -201,11 +130,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   using V = typename Shader::Varyings;
   using CV = ClipVertex<V>;
   constexpr bool kShaded = HasFragmentStage<Shader>;
-  using Record = std::conditional_t<kShaded, TriangleSetup, DepthSetup>;  // what bins carry (see Chunk)
-  auto bins_of = [](auto& ch) -> auto& {
-    if constexpr (kShaded) return ch.bins;
-    else return ch.depth_bins;
-  };
+  using Record = typename ChunkFrontEnd<Shader>::Record;  // what bins carry (BinnedChunk)
   auto staging_of = [](WorkerScratch& ws) -> Staging<Record>& {  // the worker's array for records before binning
     if constexpr (kShaded) return ws.setups;
     else return ws.depth_setups;
@@ -300,150 +225,9 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   const size_t nchunks = (ntri + chunk_tris - 1) / chunk_tris;
   timings_.chunks = nchunks;
   const bool stream_bins = !kShaded && ntri * sizeof(DepthSetup) >= detail::kStreamBinsBytes;
-  while (chunks_.size() < nchunks) chunks_.push_back(std::make_unique<Chunk>());
+  while (chunks_.size() < nchunks) chunks_.push_back(std::make_unique<BinnedChunk>());
   while (workers_.size() < size_t(pool_.workers())) workers_.push_back(std::make_unique<WorkerScratch>());
-  // One chunk's front end on the worker owning `ws`, reading vertex i's outcode and window position at
-  // codes[i − base], win[i − base]. `in_range`: the chunk's indices are known to be below nv (its range was
-  // measured), so none is tested again.
-  auto front = [&](size_t c, WorkerScratch& ws, const unsigned* codes, const WindowVertex* win, uint32_t base,
-                   bool in_range) {
-    Chunk& ch = *chunks_[c];
-    ChunkBins<Record>& bins = bins_of(ch);
-    Staging<Record>& staging = staging_of(ws);
-    bins.reset(grid, staging);
-    ch.full_count = 0;
-    ch.interp_count = 0;
-    ch.stats = DrawStats{};
-    const size_t end = std::min(ntri, (c + 1) * chunk_tris);
-    staging.reserve(end - c * chunk_tris);
-    // Bins a visible triangle's record: setup_triangle()'s, or a DepthSetup from the batch.
-    auto keep = [&](const auto& t) {
-      ++ch.stats.setups;
-      if constexpr (std::is_same_v<std::decay_t<decltype(t)>, Record>) {
-        bins.add(t, grid);
-      } else if constexpr (!kShaded) {  // a depth-only draw's triangle set up by setup_triangle()
-        DepthSetup d = pack_depth_setup(t);  // the box is right in any case; the edges only when it fits
-        if (!fits_depth_setup(t)) {
-          d.full = uint32_t(ch.full_count);
-          ch.full_count = ch.full.append(ch.full_count, t);
-        }
-        bins.add(d, grid);
-      }
-    };
-    auto count = [&](SetupResult r) {
-      switch (r) {
-        case SetupResult::visible: return true;
-        case SetupResult::culled: ++ch.stats.culled; break;
-        case SetupResult::degenerate: ++ch.stats.degenerate; break;
-        case SetupResult::outside: ++ch.stats.rejected; break;
-      }
-      return false;
-    };
-    auto emit = [&](const WindowVertex* w[3], const V* var[3]) {
-      TriangleSetup t;
-      if (!count(setup_triangle(*w[0], *w[1], *w[2], sp, t))) return;
-      if constexpr (kShaded) {
-        t.prim |= uint32_t(ch.interp_count);
-        ch.interp_count = ch.interps.append(ch.interp_count, make_interp<V>(w, var));
-      }
-      keep(t);
-    };
-    // Depth-only draws set up their unclipped triangles eight at a time (setup_batch.h), in the same order.
-    const bool batched = !kShaded && nv <= kBatchMaxVertices;
-    // The whole draw's vertex arrays, read at the mesh's indices: asked for ahead (see kVertexPrefetch).
-    const bool prefetch_vertices = !in_range && !indices.empty();
-    const uintptr_t win_at = reinterpret_cast<uintptr_t>(win), codes_at = reinterpret_cast<uintptr_t>(codes);
-    SetupBatch batch(sp, win);
-    auto take_one = [&](SetupResult r, const auto& t) {
-      if (count(r)) keep(t);
-    };
-    // A whole batch set up in SIMD (depth-only draws): its outcomes counted at once, its visible records binned in
-    // lane order, as take_one lane by lane would (see SetupLanes).
-    auto take_lanes = [&](const SetupLanes& s) {
-      if constexpr (!kShaded) {
-        ch.stats.culled += uint64_t(std::popcount(s.culled));
-        ch.stats.degenerate += uint64_t(std::popcount(s.degenerate));
-        ch.stats.rejected += uint64_t(std::popcount(s.outside));
-        ch.stats.setups += uint64_t(std::popcount(s.visible));
-        bins.add_lanes(s.record, s.visible, grid);
-      }
-    };
-    const detail::Overloaded take{take_one, take_lanes};
-    // Eight triangles at a time where they can be set up in batches: a group of triangles that are each either
-    // rejected or inside the view volume goes straight to the batch; any other group (one to clip, an index out
-    // of range) goes through the loop below one triangle at a time.
-    size_t one_by_one_until = 0;
-    for (size_t i = c * chunk_tris; i < end; ++i) {
-      if constexpr (!kShaded) {
-        if (batched && i >= one_by_one_until && end - i >= 8) {
-          if (prefetch_vertices && end - i >= detail::kVertexPrefetch + 8) {
-            // Integer addresses: an index not yet checked against nv may point anywhere.
-            const uint32_t* ahead = indices.data() + 3 * (i + detail::kVertexPrefetch);
-            for (int k = 0; k < 24; ++k) {
-              const uintptr_t v = ahead[k] - base;
-              detail::prefetch_address(win_at + v * sizeof(WindowVertex));
-              detail::prefetch_address(codes_at + v * sizeof(unsigned));
-            }
-          }
-          TriangleGroup g;
-          if (assemble_group(indices, i, codes, base, uint32_t(nv), !in_range, detail::kInvalidVertex, g) &&
-              g.clipped == 0) {
-            ch.stats.triangles += 8;
-            ch.stats.rejected += uint64_t(std::popcount(g.rejected));
-            batch.push_lanes(g, g.inside, take);
-            i += 7;
-            continue;
-          }
-          one_by_one_until = i + 8;
-        }
-      }
-      uint32_t idx[3];
-      for (int k = 0; k < 3; ++k) {
-        idx[k] = indices.empty() ? uint32_t(3 * i + k) : indices[3 * i + k];
-        if (!in_range && idx[k] >= nv)
-          throw DrawError("index " + std::to_string(idx[k]) + " at position " + std::to_string(3 * i + k) +
-                          " is out of range (" + std::to_string(nv) + " vertices)");
-      }
-      ++ch.stats.triangles;
-      const unsigned c0 = codes[idx[0] - base], c1 = codes[idx[1] - base], c2 = codes[idx[2] - base];
-      if ((c0 & c1 & c2) != 0 || ((c0 | c1 | c2) & detail::kInvalidVertex)) {
-        ++ch.stats.rejected;
-        continue;
-      }
-      if ((c0 | c1 | c2) == 0) {
-        if (batched) {
-          batch.push(idx[0] - base, idx[1] - base, idx[2] - base, take);
-          continue;
-        }
-        const WindowVertex* w[3] = {&win[idx[0] - base], &win[idx[1] - base], &win[idx[2] - base]};
-        const V* var[3] = {&post[idx[0]].var, &post[idx[1]].var, &post[idx[2]].var};
-        emit(w, var);
-        continue;
-      }
-      batch.flush(take);  // what was queued before this triangle goes first
-      ++ch.stats.clipped;
-      std::array<CV, 12> poly;
-      std::array<WindowVertex, 12> pw;
-      CV in[3];
-      for (int k = 0; k < 3; ++k) {
-        if constexpr (kShaded) in[k] = post[idx[k]];
-        else in[k].pos = shader.vertex(vertices[idx[k]], in[k].var);
-      }
-      const int n = clip_to_window(planes, c0 | c1 | c2, sp, poly, pw, in[0], in[1], in[2]);
-      if (n < 3) {
-        ++ch.stats.rejected;
-        continue;
-      }
-      for (int k = 1; k + 1 < n; ++k) {
-        const auto f = clip_fan(k);  // llvmpipe's fan order: (p[k], p[k+1], p[0])
-        const WindowVertex* w[3] = {&pw[f[0]], &pw[f[1]], &pw[f[2]]};
-        const V* var[3] = {&poly[f[0]].var, &poly[f[1]].var, &poly[f[2]].var};
-        emit(w, var);
-      }
-    }
-    batch.flush(take);
-    bins.bin(grid, stream_bins);
-  };
+  const ChunkFrontEnd<Shader> front{shader, vertices, indices, sp, planes, post, grid, ntri, chunk_tris, stream_bins};
   // A depth-only draw whose chunks use disjoint, compact vertex ranges (a soup: each chunk owns its vertices)
   // shades each chunk's range inside the chunk's task, into the chunk's own small buffers, so window vertices
   // are used while still in cache instead of going through memory. Where the ranges overlap or hold unused
@@ -460,7 +244,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     pool_.parallel_for(nchunks, [&](size_t c) {
       if (spread.load(std::memory_order_relaxed)) return;
       timed(front_busy_ns, [&] {
-        Chunk& ch = *chunks_[c];
+        BinnedChunk& ch = *chunks_[c];
         const size_t first = c * chunk_tris, end = std::min(ntri, first + chunk_tris);
         uint32_t lo = uint32_t(3 * first), hi = uint32_t(3 * end - 1);  // a non-indexed draw's range
         if (!indices.empty()) {
@@ -479,13 +263,13 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     if (compact && shaded <= nv + nv / 8) {
       pool_.parallel_for_workers(nchunks, [&](size_t c, int w) {
         timed(front_busy_ns, [&] {
-          Chunk& ch = *chunks_[c];
+          BinnedChunk& ch = *chunks_[c];
           WorkerScratch& ws = *workers_[size_t(w)];
           const uint32_t lo = ch.range_lo, hi = ch.range_hi;
           unsigned* codes = ws.codes.get<unsigned>(hi - lo + 1);
           WindowVertex* win = ws.win.get<WindowVertex>(hi - lo + 1);
           shade_vertices(lo, size_t(hi) + 1, codes, win);
-          front(c, ws, codes, win, lo, true);
+          front(c, ch, staging_of(ws), codes, win, lo, true);
           ch.pending = false;
         });
       });
@@ -497,7 +281,9 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
     shade_all_vertices();
     pool_.parallel_for_workers(nchunks, [&](size_t c, int w) {
       if (!chunks_[c]->pending) return;
-      timed(front_busy_ns, [&] { front(c, *workers_[size_t(w)], all_codes, all_win, 0, false); });
+      timed(front_busy_ns, [&] {
+        front(c, *chunks_[c], staging_of(*workers_[size_t(w)]), all_codes, all_win, 0, false);
+      });
     });
   }
 
@@ -517,11 +303,9 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
                        std::memory_order_relaxed);
   };
   DrawStats stats;
-  const std::span<const std::unique_ptr<Chunk>> chunks(chunks_.data(), nchunks);
+  const std::span<const std::unique_ptr<BinnedChunk>> chunks(chunks_.data(), nchunks);
   for (const auto& ch : chunks) stats += ch->stats;
-  const int tx0 = sp.clip.x0 >> kTileSizeLog2, tx1 = sp.clip.x1 >> kTileSizeLog2;
-  const int ty0 = sp.clip.y0 >> kTileSizeLog2, ty1 = sp.clip.y1 >> kTileSizeLog2;
-  const int ntx = tx1 - tx0 + 1, nty = ty1 - ty0 + 1;
+  const TilePlan plan = TilePlan::make(grid, sp.clip, targets.depth, clear_raw);
   const bool test = state.depth_test && targets.depth;
   const DepthFunc func = test ? state.depth_func : DepthFunc::always;
   const bool depth_write = test && state.depth_write && func != DepthFunc::never;  // NEVER writes nothing
@@ -531,69 +315,13 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
   dispatch_depth_format(format, [&]<DepthFormat F>() {
     auto run_tiles = [&](auto make_stage, bool use_hiz = false) {
       tiles_ran = true;
-      // With a clear pending, the tasks cover every tile of the target; otherwise the draw's rectangle's.
-      const int gx0 = clear_raw ? 0 : tx0, gy0 = clear_raw ? 0 : ty0;
-      const int gnx = clear_raw ? grid.tiles_x : ntx, gny = clear_raw ? grid.tiles_y : nty;
-      auto run_tile = [&](size_t k) {
-        const int tx = gx0 + int(k % size_t(gnx)), ty = gy0 + int(k / size_t(gnx));
-        if (clear_raw) {
-          clear_tile(tx, ty);
-          if (tx < tx0 || tx > tx1 || ty < ty0 || ty > ty1) return;
-        }
-        const PixelRect rect{std::max(sp.clip.x0, tx << kTileSizeLog2), std::max(sp.clip.y0, ty << kTileSizeLog2),
-                             std::min(sp.clip.x1, ((tx + 1) << kTileSizeLog2) - 1),
-                             std::min(sp.clip.y1, ((ty + 1) << kTileSizeLog2) - 1)};
-        const size_t tile = size_t(ty) * size_t(grid.tiles_x) + size_t(tx);
-        uint32_t records = 0;
-        for (const auto& chp : chunks) {
-          const auto& offsets = bins_of(*chp).offsets;
-          records += offsets[tile + 1] - offsets[tile];
-        }
-        if (records == 0) return;
-        detail::NextTileRows next;  // the lines of the tile this worker likely clears next (see NextTileRows)
-        if (clear_raw && k + 1 < size_t(gnx) * size_t(gny)) {
-          const int nx = gx0 + int((k + 1) % size_t(gnx)), ny = gy0 + int((k + 1) / size_t(gnx));
-          const size_t bpt = targets.depth->bytes_per_texel();
-          next.pitch = size_t(targets.depth->pitch()) * bpt;
-          next.at = reinterpret_cast<uintptr_t>(targets.depth->template row<uint8_t>(0)) +
-                    size_t(ny << kTileSizeLog2) * next.pitch + size_t(nx << kTileSizeLog2) * bpt;
-          // A tile of the rightmost column also clears the rest of its rows (fill_tile): the pitch's extra line.
-          const bool last = (nx << kTileSizeLog2) + kTileSize >= targets.depth->width();
-          const size_t row_bytes = last ? next.pitch - size_t(nx << kTileSizeLog2) * bpt : size_t(kTileSize) * bpt;
-          next.lines = int((row_bytes + 63) / 64);
-          next.left = kTileSize;
-          next.per_record = int(std::min<uint32_t>(kTileSize, (kTileSize + records - 1) / records));
-        }
-        TileHiZ hiz;  // hierarchical depth, for the stages that use it
-        if (use_hiz && clear_raw) hiz.set_all(tx << kTileSizeLog2, ty << kTileSizeLog2, std::bit_cast<float>(*clear_raw));
-        else if (use_hiz) hiz.load(*targets.depth, tx << kTileSizeLog2, ty << kTileSizeLog2);
-        for (const auto& chp : chunks) {
-          const Chunk& ch = *chp;
-          const auto stage = make_stage(ch, hiz);
-          const ChunkBins<Record>& bins = bins_of(ch);
-          const uint32_t b = bins.offsets[tile], e = bins.offsets[tile + 1];
-          auto record = [&](uint32_t i) [[gnu::always_inline]] {
-            // The record kBinPrefetch ahead is asked for now (see kBinPrefetch), past the slice's end too.
-            detail::prefetch_address(reinterpret_cast<uintptr_t>(bins.binned.data() + i) +
-                                     detail::kBinPrefetch * sizeof(Record));
-            const Record& t = bins.binned[i];
-            if constexpr (kShaded) rasterize(t, rect, stage);
-            else if (t.full == kNoFullSetup) rasterize(t, rect, stage);
-            else rasterize(ch.full.template view<TriangleSetup>()[t.full], rect, stage);
-          };
-          uint32_t i = b;
-          for (; i < e && next.left > 0; ++i) {
-            next.ask_rows();
-            record(i);
-          }
-          for (; i < e; ++i) record(i);
-        }
-      };
-      pool_.parallel_for(size_t(gnx) * size_t(gny), [&](size_t k) { timed(back_busy_ns, [&] { run_tile(k); }); });
+      pool_.parallel_for(plan.tasks(), [&](size_t k) {
+        timed(back_busy_ns, [&] { execute_tile<Record>(plan, k, chunks, make_stage, use_hiz, clear_tile); });
+      });
     };
     if constexpr (kShaded) {
       const DepthCompare compare(func);
-      run_tiles([&](const Chunk& ch, TileHiZ&) {
+      run_tiles([&](const BinnedChunk& ch, TileHiZ&) {
         return ShadedStage<Shader, F>{&shader,      ch.interps.view<TriangleInterp<V>>(),
                                       test ? targets.depth : nullptr, targets.color, compare, depth_write,
                                       state.color_write, state.blend};
@@ -602,7 +330,7 @@ DrawStats Renderer::draw(RenderTargets targets, const DrawState& state_in, const
       dispatch_depth_only_func(func, [&]<class Compare>(Compare compare) {
         auto depth_only = [&]<bool kWrite>() {
           using Stage = DepthOnlyStage<F, Compare, kWrite>;
-          run_tiles([&](const Chunk&, TileHiZ& hiz) { return Stage{targets.depth, &hiz, compare}; }, Stage::kHiZ);
+          run_tiles([&](const BinnedChunk&, TileHiZ& hiz) { return Stage{targets.depth, &hiz, compare}; }, Stage::kHiZ);
         };
         if (depth_write) depth_only.template operator()<true>();
         else depth_only.template operator()<false>();

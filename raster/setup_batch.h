@@ -40,12 +40,13 @@ static_assert(sizeof(WindowVertex) == 6 * sizeof(float) && offsetof(WindowVertex
               offsetof(WindowVertex, sx) == 4 * sizeof(float) && offsetof(WindowVertex, sy) == 5 * sizeof(float));
 inline constexpr size_t kBatchMaxVertices = size_t(1) << 28;
 
-// A batch's outcome handed over in one call (SetupBatch::flush): lane l, for each queued lane, has exactly one bit l
-// among the four masks, and its record at record[l] when it is visible. Taking a batch this way instead of lane by
-// lane, the depth-only front end counts its outcomes once and copies its records in one loop (renderer.h): measured
-// on the 2-core AMD EPYC (Zen 4), AVX-512 path, 2 threads, shadowlab alone, five rounds alternating, the dragon's
-// front end 8.76–9.12 → 8.06–8.31 ms (the draw 17.90–18.57 → 17.23–17.51 ms; four more rounds in a slower hour,
-// 9.13–9.78 → 8.52–8.94 ms) and three rounds, 10⁶ triangles of ~10 px 12.83–12.94 → 11.93–12.25 ms.
+// A batch's outcome handed over in one call (SetupBatch::flush): lane l, for each queued lane, has exactly one
+// bit l among the four masks, and its record at record[l] when it is visible. Taking a batch this way instead of
+// lane by lane, the depth-only front end counts its outcomes once and copies its records in one loop
+// (chunk_front_end.h): measured on the 2-core AMD EPYC (Zen 4), AVX-512 path, 2 threads, shadowlab alone, five
+// rounds alternating, the dragon's front end 8.76–9.12 → 8.06–8.31 ms (the draw 17.90–18.57 → 17.23–17.51 ms;
+// four more rounds in a slower hour, 9.13–9.78 → 8.52–8.94 ms) and three rounds, 10⁶ triangles of ~10 px
+// 12.83–12.94 → 11.93–12.25 ms.
 struct SetupLanes {
   const DepthSetup* record;
   unsigned visible, culled, degenerate, outside;

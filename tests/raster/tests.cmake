@@ -13,6 +13,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/clear_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/target_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/bins_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/tile_execution_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/hiz_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/srgb8_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/simd_records_test.cpp
