@@ -15,6 +15,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include <glm/vec3.hpp>
 
@@ -219,13 +220,28 @@ inline void load_pairs8(const Pcf8Level& L, __m256i offv, __m256 tex[4]) {
     prefetch_ahead8(L.level.data, ptrdiff_t(L.level.row_bytes), 4, int(off[0]), int(off[4]));
     for (int r = 0; r < 2; ++r) {
       const float* row = L.base + r * L.pitch;
-      auto pair2 = [&](int a, int b) {  // texels (off[a], off[a] + 1, off[b], off[b] + 1) of this row
-        const __m128 lo = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(row + off[a])));
-        return _mm_loadh_pi(lo, reinterpret_cast<const __m64*>(row + off[b]));
+      // The pairs of lanes a, b, c, d of this row as the four 64-bit elements of one register: the first loaded
+      // alone, the others broadcast and blended in. A broadcast from memory is a load alone and the blend runs on
+      // any of three ports, where a load into the upper half (movhps) and the 128-bit insert both need the one
+      // shuffle port of Intel cores, which the shuffles below and the shader's own also need: per row 6 blends
+      // and 2 shuffles instead of 8 shuffles. With compare_blend_taps8's mask blends, on the 2-core Xeon (family 6
+      // model 167, AVX-512 path), the one-lookup pass faster in every round (see there); on its AVX2 path, four
+      // rounds, no change out of the noise.
+      auto pairs4 = [&](int a, int b, int c, int d) {
+        auto pair = [&](int l) {
+          uint64_t q;
+          std::memcpy(&q, row + off[l], sizeof q);
+          return _mm256_set1_epi64x(int64_t(q));
+        };
+        __m256i v = _mm256_castsi128_si256(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(row + off[a])));
+        v = _mm256_blend_epi32(v, pair(b), 0x0C);
+        v = _mm256_blend_epi32(v, pair(c), 0x30);
+        v = _mm256_blend_epi32(v, pair(d), 0xC0);
+        return _mm256_castsi256_ps(v);
       };
       // Pairs of lanes (0 1 | 4 5) and (2 3 | 6 7); the even elements are the x texels, the odd ones x + 1.
-      const __m256 p01 = _mm256_insertf128_ps(_mm256_castps128_ps256(pair2(0, 1)), pair2(4, 5), 1);
-      const __m256 p23 = _mm256_insertf128_ps(_mm256_castps128_ps256(pair2(2, 3)), pair2(6, 7), 1);
+      const __m256 p01 = pairs4(0, 1, 4, 5);
+      const __m256 p23 = pairs4(2, 3, 6, 7);
       tex[2 * r] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(2, 0, 2, 0));
       tex[2 * r + 1] = _mm256_shuffle_ps(p01, p23, _MM_SHUFFLE(3, 1, 3, 1));
     }
@@ -285,13 +301,17 @@ inline __m256 reference8(__m256 ref) {
   else return _mm256_min_ps(_mm256_max_ps(ref, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
 }
 template <TexelFormat F>
-inline void compare_taps8(__m256 ref, __m256 tex[4]) {
+inline void decode_taps8(__m256 tex[4]) {
   if constexpr (F == TexelFormat::d24) {
     const __m256i mask = _mm256_set1_epi32(0xFFFFFF);
     const __m256 maxcode = _mm256_set1_ps(16777215.0f);
     for (int k = 0; k < 4; ++k)
       tex[k] = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(_mm256_castps_si256(tex[k]), mask)), maxcode);
   }
+}
+template <TexelFormat F>
+inline void compare_taps8(__m256 ref, __m256 tex[4]) {
+  decode_taps8<F>(tex);
   for (int k = 0; k < 4; ++k) tex[k] = _mm256_cmp_ps(ref, tex[k], _CMP_LE_OQ);
 }
 
@@ -307,6 +327,34 @@ inline __m256 blend_taps8(const __m256 r[4], __m256 a, __m256 b) {
   const __m256 xa = lerp01(r[0], r[1]);
   const __m256 xb = lerp01(r[2], r[3]);
   return _mm256_add_ps(xa, _mm256_mul_ps(b, _mm256_sub_ps(xb, xa)));
+}
+
+// compare_taps8 then blend_taps8, the same values. With AVX-512 the compares go to mask registers and the blends
+// are mask moves, as in the sixteen-lane kernel (compare_blend16): one micro-op each, where vblendvps on a ymm
+// register takes three on recent Intel cores (measured on the 2-core Xeon, family 6 model 167: eight independent
+// vblendvps 0.9 cycles each, vblendmps 0.3) and one on AMD's. Eight lookups' compare and blend: 10 micro-ops
+// instead of 18, and the blends' latency 1 cycle instead of 3. Measured with the pair loads below (load_pairs8)
+// in bench/pcf_pass_bench.cpp on that Xeon, AVX-512 path, 2 threads, shadowlab alone, five rounds alternating
+// (medians of 31 frames): one lookup per pixel 5.82 / 5.62 / 5.75 / 5.19 / 5.62 → 4.70 / 5.39 / 4.37 / 5.14 /
+// 3.64 ms; see docs/performance-log.md.
+template <TexelFormat F>
+inline __m256 compare_blend_taps8(__m256 ref, __m256 tex[4], __m256 a, __m256 b) {
+#if defined(SHADOWLAB_SIMD_AVX512)
+  decode_taps8<F>(tex);
+  __mmask8 pass[4];
+  for (int k = 0; k < 4; ++k) pass[k] = _mm256_cmp_ps_mask(ref, tex[k], _CMP_LE_OQ);
+  const __m256 onef = _mm256_set1_ps(1.0f);
+  const __m256 one_minus_a = _mm256_sub_ps(onef, a);
+  auto lerp01 = [&](__mmask8 m0, __mmask8 m1) {
+    return _mm256_mask_blend_ps(m0, _mm256_maskz_mov_ps(m1, a), _mm256_mask_blend_ps(m1, one_minus_a, onef));
+  };
+  const __m256 xa = lerp01(pass[0], pass[1]);
+  const __m256 xb = lerp01(pass[2], pass[3]);
+  return _mm256_add_ps(xa, _mm256_mul_ps(b, _mm256_sub_ps(xb, xa)));
+#else
+  compare_taps8<F>(ref, tex);
+  return blend_taps8(tex, a, b);
+#endif
 }
 
 // Eight lookups anywhere: coordinates clamped as clamp_texel_coord does, taps at the edges fixed, taps outside
@@ -366,8 +414,7 @@ inline __m256 pcf_lequal_gather8(const Pcf8Level& L, __m256 s, __m256 t, __m256 
   const __m256 fu = _mm256_cvtepi32_ps(i0), fv = _mm256_cvtepi32_ps(j0);
   __m256 r[4];
   load_pairs8<F>(L, pair_offsets8_madd<F>(L, xb, yb), r);
-  compare_taps8<F>(reference8<F>(ref), r);
-  return blend_taps8(r, _mm256_sub_ps(u, fu), _mm256_sub_ps(v, fv));
+  return compare_blend_taps8<F>(reference8<F>(ref), r, _mm256_sub_ps(u, fu), _mm256_sub_ps(v, fv));
 }
 
 // Eight lookups from an array of (s, t, ref).
