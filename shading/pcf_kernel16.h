@@ -74,12 +74,16 @@ inline void load_pairs16(const Pcf16Level& L, __m512i offv, __m512 tex[4]) {
   } else {
     // Offsets to general registers two at a time, as load_pairs8 does; non-negative, so the odd lanes are the
     // upper halves as they stand.
+    // The block index is a template argument: Clang wants the extract's immediate a constant where the loop
+    // variable is not one (GCC folds it after unrolling), so a Clang build with AVX-512 compiles too.
     uint64_t off[16];
-    for (int k = 0; k < 4; ++k) {
+    auto take = [&]<int k>() {
       const __m128i o = _mm512_maskz_extracti32x4_epi32(0xF, offv, k);
       const uint64_t q0 = uint64_t(_mm_cvtsi128_si64(o)), q1 = uint64_t(_mm_extract_epi64(o, 1));
       off[4 * k] = uint32_t(q0), off[4 * k + 1] = q0 >> 32, off[4 * k + 2] = uint32_t(q1), off[4 * k + 3] = q1 >> 32;
-    }
+    };
+    take.template operator()<0>(), take.template operator()<1>(), take.template operator()<2>();
+    take.template operator()<3>();
     for (int r = 0; r < 2; ++r) {
       const float* row = L.half.base + r * L.half.pitch;
       auto pair2 = [&](int a, int b) {  // texels (off[a], off[a] + 1, off[b], off[b] + 1) of this row
