@@ -264,10 +264,9 @@ inline void rasterize_narrow(const Tri& t, int32_t x0, int32_t y0, int32_t x1, i
   // The edge values are exact modulo 2^32, and they fit int32 there (limits.h, kNarrowCoefBits).
   EdgeRows edges(t, simd::VecI32::splat(xs) + simd::VecI32::iota(), simd::VecI32::splat(y0));
   const auto cols = stage.columns(t, xs);
-  typename Stage::BlockMax unused;
   auto at = stage.cursor(xs, y0);
   for (int32_t y = y0; y <= y1; ++y) {
-    stage.rows(cols, at, lanes & edges.inside(), unused);
+    stage.row(cols, at, lanes & edges.inside());
     edges.next_rows();
     stage.next_rows(at);
   }
@@ -275,7 +274,7 @@ inline void rasterize_narrow(const Tri& t, int32_t x0, int32_t y0, int32_t x1, i
 
 // Rasterizes one triangle within `r` (a rectangle inside one tile) and hands covered pixels to the stage.
 // A row stage (depth-only) has kRows, columns(t, x), cursor(x, y) / next_rows(cursor), rows(columns, cursor,
-// mask, BlockMax&), hiz_plane / hidden_blocks / block_done around each block (hierarchical depth), and one_row()
+// mask, BlockMax&) (and row(columns, cursor, mask) for the narrow path, no bound kept), hiz_plane / hidden_blocks / block_done around each block (hierarchical depth), and one_row()
 // (the same stage with kRows 1), and gets one segment of 8 pixels by kRows rows at a time; narrow triangles (at
 // most 8 pixels wide and kNarrowMaxRows high within `r`) take one segment column placed inside the tile, one row
 // at a time, others go through 8×8 blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets

@@ -160,6 +160,22 @@ struct DepthOnlyStage {
     }
   }
 
+  // One row at the cursor for the lanes set in `covered`, keeping no block bound: the narrow path's rows
+  // (rasterize_narrow, coverage.h), which leave the hierarchical bounds as they were (still at or above what the
+  // blocks hold, as LESS and LEQUAL only bring depths nearer). On d32f only the passing lanes are written
+  // (simd::store_select: a masked store with AVX-512); the other formats go through rows().
+  [[gnu::always_inline]] void row(const Columns& c, const Cursor& at, Mask covered) const {
+    static_assert(Rows == 1, "the narrow path takes one row a step (one_row())");
+    if constexpr (Format == DepthFormat::d32f && Write) {
+      const simd::VecF32 frag = Traits::from_depth(plane_depth_clamped(c.zcol, c.dzdy, c.z_offset, at.y));
+      const simd::VecF32 stored = Traits::load(at.p);
+      simd::store_select(compare(frag, stored) & covered, stored, frag, at.p);
+    } else {
+      BlockMax unused;
+      rows(c, at, covered, unused);
+    }
+  }
+
  private:
   auto load(const Storage* p) const {
     if constexpr (Rows == 1) return Traits::load(p);

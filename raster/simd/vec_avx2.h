@@ -89,6 +89,19 @@ inline Mask cmp_neq(VecI32 a, VecI32 b) { return and_not(Mask::all(), Mask{_mm25
 // Lane l of the result is b where m is true, else a.
 inline VecF32 select(Mask m, VecF32 a, VecF32 b) { return {_mm256_blendv_ps(a.v, b.v, _mm256_castsi256_ps(m.v))}; }
 inline VecI32 select(Mask m, VecI32 a, VecI32 b) { return {_mm256_blendv_epi8(a.v, b.v, m.v)}; }
+// Writes select(m, a, b) to p, where a is what p already holds (the caller has read it): lanes outside m keep
+// their value. AVX-512 builds write only m's lanes, with a masked store (mask register, no three-micro-op
+// vblendvps); AVX2 ones blend and write all eight. Measured on the 2-core KVM Xeon (family 6, model 167), 2
+// threads, without llvmpipe, in the narrow triangles' rows (depth_stage.h, DepthOnlyStage::row): see
+// docs/performance-log.md, 2026-12-03.
+inline void store_select(Mask m, VecF32 a, VecF32 b, float* p) {
+#if defined(SHADOWLAB_SIMD_AVX512)
+  (void)a;
+  _mm256_mask_storeu_ps(p, _mm256_movepi32_mask(m.v), b.v);
+#else
+  _mm256_storeu_ps(p, _mm256_blendv_ps(a.v, b.v, _mm256_castsi256_ps(m.v)));
+#endif
+}
 
 // ---- For the shaded back end's 4×2 pixel groups (lanes 0–3 one row, 4–7 the next) and its colour writes.
 // Lane l of the result is a's lane idx[l] (idx in 0..7).

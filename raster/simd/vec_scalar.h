@@ -75,6 +75,8 @@ inline Mask cmp_neq(VecI32 a, VecI32 b) { return lanes_where(a, b, [](int32_t x,
 
 inline VecF32 select(Mask m, VecF32 a, VecF32 b) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = (m.m >> i & 1) ? b.v[i] : a.v[i]; return r; }
 inline VecI32 select(Mask m, VecI32 a, VecI32 b) { VecI32 r; for (int i = 0; i < 8; ++i) r.v[i] = (m.m >> i & 1) ? b.v[i] : a.v[i]; return r; }
+// Writes select(m, a, b) to p, a being what p holds (see vec_avx2.h): only m's lanes change.
+inline void store_select(Mask m, VecF32 a, VecF32 b, float* p) { (void)a; for (int i = 0; i < 8; ++i) if (m.m >> i & 1) p[i] = b.v[i]; }
 
 // ---- For the shaded back end's 4×2 pixel groups and its colour writes (see vec_avx2.h).
 inline VecF32 permute(VecF32 a, VecI32 idx) { VecF32 r; for (int i = 0; i < 8; ++i) r.v[i] = a.v[idx.v[i] & 7]; return r; }

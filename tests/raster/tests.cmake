@@ -17,6 +17,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/hiz_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/srgb8_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/simd_records_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/raster/simd_store_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/isa_namespace_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/thread_pool_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/raster/isa_select_test.cpp
