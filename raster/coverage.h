@@ -274,10 +274,11 @@ inline void rasterize_narrow(const Tri& t, int32_t x0, int32_t y0, int32_t x1, i
 
 // Rasterizes one triangle within `r` (a rectangle inside one tile) and hands covered pixels to the stage.
 // A row stage (depth-only) has kRows, columns(t, x), cursor(x, y) / next_rows(cursor), rows(columns, cursor,
-// mask, BlockMax&) (and row(columns, cursor, mask) for the narrow path, no bound kept), hiz_plane / hidden_blocks / block_done around each block (hierarchical depth), and one_row()
-// (the same stage with kRows 1), and gets one segment of 8 pixels by kRows rows at a time; narrow triangles (at
-// most 8 pixels wide and kNarrowMaxRows high within `r`) take one segment column placed inside the tile, one row
-// at a time, others go through 8×8 blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets
+// mask, BlockMax&) and, for the narrow path, row(columns, cursor, mask) (no bound kept), hiz_plane / hidden_blocks
+// / block_done around each block (hierarchical depth), and one_row() (the same stage with kRows 1), and gets
+// one segment of 8 pixels by kRows rows at a time; narrow triangles (at most 8 pixels wide and kNarrowMaxRows
+// high within `r`) take one segment column placed inside the tile, one row at a time, others go through 8×8
+// blocks. A block stage (shaded) has block(t, bx, by, uint64_t mask) and gets
 // whole blocks. A row stage takes either record (TriangleSetup or DepthSetup), a block stage a TriangleSetup.
 template <class Tri, class Stage>
 inline void rasterize(const Tri& t, const PixelRect& r, const Stage& stage) {

@@ -91,9 +91,10 @@ inline VecF32 select(Mask m, VecF32 a, VecF32 b) { return {_mm256_blendv_ps(a.v,
 inline VecI32 select(Mask m, VecI32 a, VecI32 b) { return {_mm256_blendv_epi8(a.v, b.v, m.v)}; }
 // Writes select(m, a, b) to p, where a is what p already holds (the caller has read it): lanes outside m keep
 // their value. AVX-512 builds write only m's lanes, with a masked store (mask register, no three-micro-op
-// vblendvps); AVX2 ones blend and write all eight. Measured on the 2-core KVM Xeon (family 6, model 167), 2
-// threads, without llvmpipe, in the narrow triangles' rows (depth_stage.h, DepthOnlyStage::row): see
-// docs/performance-log.md, 2026-12-03.
+// vblendvps); AVX2 ones blend and write all eight. In the narrow triangles' rows (depth_stage.h,
+// DepthOnlyStage::row), measured on the 2-core KVM Xeon (family 6, model 167), 2 threads, without llvmpipe, noisy:
+// the dragon's back end faster in 18 of 25 paired rounds, median ratio about 0.92 (docs/performance-log.md,
+// 2026-12-03).
 inline void store_select(Mask m, VecF32 a, VecF32 b, float* p) {
 #if defined(SHADOWLAB_SIMD_AVX512)
   (void)a;
