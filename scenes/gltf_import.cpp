@@ -13,6 +13,7 @@
 #include <memory>
 #include <numeric>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -68,6 +69,13 @@ tinygltf::Model load_model(const std::filesystem::path& path, const std::string&
   const std::string dir = path.parent_path().empty() ? std::string(".") : path.parent_path().string();
   const auto length = static_cast<unsigned int>(size);
   const bool binary = length >= 4 && std::equal(bytes.get(), bytes.get() + 4, "glTF");
+  if (binary && length >= 8) {  // the header's version (little-endian uint32 at byte 4): this reader is glTF 2.0
+    const uint32_t version = uint32_t(bytes[4]) | uint32_t(bytes[5]) << 8 | uint32_t(bytes[6]) << 16 |
+                             uint32_t(bytes[7]) << 24;
+    if (version != 2)
+      throw SceneError(file, "", "malformed GLB: header version " + std::to_string(version) +
+                                     " (only glTF 2.0 binaries, version 2, are read)");
+  }
   bool ok = false;
   try {
     ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.get(), length, dir)
@@ -122,6 +130,9 @@ class Importer {
     }
     walk(roots);
     if (out_.instances.empty()) fail("", "empty mesh: the file's scene has no triangles");
+    bool area = false;
+    for (const Instance& inst : out_.instances) area = area || has_triangle_with_area(out_.meshes[inst.mesh]);
+    if (!area) fail("", "every triangle of the file's scene has zero area: nothing would be drawn or cast a shadow");
   }
 
  private:
@@ -163,7 +174,15 @@ class Importer {
       seen[size_t(item.index)] = true;
       const std::string key = indexed("nodes", size_t(item.index));
       const tinygltf::Node& node = model_.nodes[size_t(item.index)];
-      const glm::dmat4 world = item.parent * node_matrix(node);
+      const glm::dmat4 local = node_matrix(node);
+      // glTF 2.0 §5.25: a node's matrix is a decomposable affine transform (its last row 0, 0, 0, 1).
+      bool finite = true;
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) finite &= std::isfinite(local[c][r]);
+      if (!finite) fail(key, "the node's transform holds a value that is not a finite number");
+      if (local[0][3] != 0.0 || local[1][3] != 0.0 || local[2][3] != 0.0 || local[3][3] != 1.0)
+        fail(key + ".matrix", "not an affine transform: its last row must be 0, 0, 0, 1");
+      const glm::dmat4 world = item.parent * local;
       const glm::mat4 worldf(world);
       if (node.mesh >= 0) add_mesh_instances(node, worldf, key);
       if (node.camera >= 0) add_camera(node, worldf, key);
@@ -469,6 +488,12 @@ class Importer {
     l.range = float(src.range);
     l.position = glm::vec3(world * glm::vec4(0, 0, 0, 1));
     l.direction = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+    if (l.type == LightType::spot) {  // KHR_lights_punctual: 0 <= inner < outer <= pi/2
+      const double inner = src.spot.innerConeAngle, outer = src.spot.outerConeAngle;
+      if (!(inner >= 0.0 && inner < outer && outer <= glm::half_pi<double>() + 1e-9))
+        fail(where + ".spot", "innerConeAngle " + std::to_string(inner) + " and outerConeAngle " +
+                                  std::to_string(outer) + " must satisfy 0 <= inner < outer <= pi/2");
+    }
     l.inner_cone_deg = float(glm::degrees(src.spot.innerConeAngle));
     l.outer_cone_deg = float(glm::degrees(src.spot.outerConeAngle));
     l.shadow = default_shadow_settings(l.type);

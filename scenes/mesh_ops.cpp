@@ -2,6 +2,8 @@
 #include "scenes/mesh_ops.h"
 
 #include <cmath>
+
+#include <glm/geometric.hpp>
 #include <utility>
 
 namespace scenes {
@@ -68,6 +70,15 @@ std::vector<uint32_t> fan_to_list(std::span<const uint32_t> fan) {
   out.reserve((fan.size() - 2) * 3);
   for (size_t i = 0; i + 2 < fan.size(); ++i) push_unless_degenerate(out, fan[i + 1], fan[i + 2], fan[0]);
   return out;
+}
+
+bool has_triangle_with_area(const Mesh& m) {
+  for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    const glm::vec3 n = glm::cross(m.positions[m.indices[t + 1]] - m.positions[m.indices[t]],
+                                   m.positions[m.indices[t + 2]] - m.positions[m.indices[t]]);
+    if (glm::dot(n, n) > 0.0f) return true;
+  }
+  return false;
 }
 
 std::optional<std::string> mesh_problem(const Mesh& mesh) {

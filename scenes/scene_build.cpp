@@ -3,11 +3,15 @@
 #include "scenes/scene_build.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <cctype>
 #include <cerrno>
 #include <system_error>
 #include <map>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_access.hpp>
 
 #include "scenes/camera_math.h"
 #include "scenes/gltf_import.h"
@@ -57,6 +61,8 @@ class Builder {
       add(o, Inherited{}, uint32_t(i), "objects[" + std::to_string(i) + "]");
     }
     if (out_.instances.empty()) fail("objects", "the scene has no triangles");
+    if (!any_triangle_with_area())
+      fail("objects", "every triangle of the scene has zero area: nothing would be drawn or cast a shadow");
     flip_mirrored();
     finish_cameras();
     finish_lights();
@@ -81,9 +87,45 @@ class Builder {
     return *default_material_;
   }
 
+  bool any_triangle_with_area() const {
+    for (const Instance& inst : out_.instances)
+      if (has_triangle_with_area(out_.meshes[inst.mesh])) return true;
+    return false;
+  }
+
+  // An object's own transform must keep it a solid (no zero scale, no matrix of rank below 3) and affine, and
+  // with its parents' keep finite numbers: a flattened or overflowing object would vanish without a word.
+  void check_transform(const ObjectDesc& o, const glm::mat4& own, const glm::mat4& world, const std::string& key) const {
+    const std::string at = key + ".transform";
+    if (o.transform.matrix) {
+      const glm::mat4& m = *o.transform.matrix;
+      if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f)
+        fail(at + ".matrix", "not an affine transform: its last row must be 0, 0, 0, 1");
+    }
+    const double det = glm::determinant(glm::dmat3(glm::mat3(own)));
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det))
+      fail(at, "is singular: it flattens the object to nothing (a zero scale, or a matrix of rank below 3)");
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite(world[c][r])) fail(at, "takes the object beyond the range of 32-bit floats");
+  }
+
+  // Where a mesh of a shape or an inline mesh lands, every corner of its bounds must stay a finite number.
+  void check_placement(const Mesh& mesh, const glm::mat4& world, const std::string& key) const {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec4 corner = world * glm::vec4(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z, 1.0f);
+      if (!std::isfinite(corner.x) || !std::isfinite(corner.y) || !std::isfinite(corner.z))
+        fail(key + ".transform", "takes the object's vertices beyond the range of 32-bit floats");
+    }
+  }
+
   void add(const ObjectDesc& o, const Inherited& parent, uint32_t object, const std::string& key) {
     Inherited here = parent;
-    here.transform = parent.transform * transform_matrix(o.transform);
+    const glm::mat4 own = transform_matrix(o.transform);
+    here.transform = parent.transform * own;
+    check_transform(o, own, here.transform, key);
     if (o.material) {
       const auto it = material_index_.find(*o.material);
       if (it == material_index_.end()) fail(key + ".material", "unknown material '" + *o.material + "'");
@@ -98,9 +140,17 @@ class Builder {
         const size_t colon = problem->find(": ");
         fail(key + ".primitive." + problem->substr(0, colon), problem->substr(colon + 2));
       }
-      add_instance(name, shape_mesh(*shape), here, object);
+      const uint32_t mesh = shape_mesh(*shape);
+      check_placement(out_.meshes[mesh], here.transform, key);
+      add_instance(name, mesh, here, object);
     } else if (const auto* mesh = std::get_if<Mesh>(&o.source)) {
       if (auto problem = mesh_problem(*mesh)) fail(key + ".mesh", *problem);
+      // Drawn as any other (issue 23: such triangles get a defined answer), but said, since it shows nothing;
+      // a scene of nothing else is an error (run()).
+      if (!has_triangle_with_area(*mesh))
+        out_.warnings.push_back(ctx_.file + ": " + key + ".mesh: every triangle has zero area (its vertices coincide "
+                                "or lie on a line): it draws nothing");
+      check_placement(*mesh, here.transform, key);
       Mesh m = *mesh;
       if (m.name.empty()) m.name = name;
       if (const size_t fixed = repair_normals(m))

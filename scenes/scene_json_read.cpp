@@ -1,6 +1,8 @@
 // Strict reader of the scene JSON format (see scene_json.h and docs/scene-format.md): every object's keys are
 // checked against the keys its kind allows, every value against its type and range, before anything is built.
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <set>
@@ -77,6 +79,17 @@ Material read_material(const JsonIn& j) {
   read_opt(j, "shininess", m.shininess);
   read_opt(j, "double_sided", m.double_sided);
   if (m.shininess < 0.0f) j.fail_at("shininess", "must not be negative");
+  // Reflectances, as glTF's baseColorFactor: each component in [0, 1] (a colour above 1 reflects more light than
+  // arrives, below 0 absorbs what no surface can, and both throw the automatic exposure off).
+  for (int i = 0; i < 4; ++i)
+    if (!(m.base_color[i] >= 0.0f && m.base_color[i] <= 1.0f))
+      j.fail_at("base_color", "each component must lie in [0, 1] (linear reflectance and alpha)");
+  for (int i = 0; i < 3; ++i)
+    if (!(m.specular_color[i] >= 0.0f && m.specular_color[i] <= 1.0f))
+      j.fail_at("specular_color", "each component must lie in [0, 1]");
+  if (!(m.specular_strength >= 0.0f && m.specular_strength <= 1000.0f))
+    j.fail_at("specular_strength", "must lie in [0, 1000]");
+  if (!(m.shininess <= 1e6f)) j.fail_at("shininess", "must be at most 10^6");
   if (auto a = j.optional("alpha_mode")) {
     const std::string mode = a->nonempty_string();
     if (mode == "opaque") m.alpha_mode = AlphaMode::opaque;
@@ -190,6 +203,12 @@ Light read_light(const JsonIn& j) {
   if (auto t = j.optional("to_light")) {
     if (j.has("direction")) t->fail("cannot be combined with direction");
     l.direction = -t->vec3();
+  }
+  {  // Scaled by its largest component, so that a huge or tiny (but non-zero) vector normalises without
+     // overflowing or underflowing: only its direction counts.
+    const float m = std::max({std::fabs(l.direction.x), std::fabs(l.direction.y), std::fabs(l.direction.z)});
+    const float d2 = l.direction.x * l.direction.x + l.direction.y * l.direction.y + l.direction.z * l.direction.z;
+    if (m > 0.0f && std::isfinite(m) && !(d2 >= 1e-30f && d2 <= 1e30f)) l.direction /= m;
   }
   read_opt(j, "inner_cone", l.inner_cone_deg);
   read_opt(j, "outer_cone", l.outer_cone_deg);

@@ -94,7 +94,8 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
       p->far = glm::length(c.position - c.target) + 5.0f * std::max(radius, 1e-3f);
     }
     desc.cameras.push_back(c);
-    out.notes.push_back(file + " has no camera: added one framing the model (--camera orbit:AZ,EL)");
+    if (!options.camera_chosen)
+      out.notes.push_back(file + " has no camera: added one framing the model (--camera orbit:AZ,EL)");
   }
   out.scene = build_scene(desc, context);
   return out;

@@ -20,6 +20,7 @@ struct StageOptions {
   // camera's azimuth, kStageSunElevation up.
   std::optional<glm::vec2> sun;
   bool z_up = false;                 // the model's up axis is +Z: rotated so that it is +Y
+  bool camera_chosen = false;        // the caller picks its own camera: the framing camera is added unannounced
 };
 
 struct StagedScene {

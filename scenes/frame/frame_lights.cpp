@@ -116,6 +116,21 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
       c.filter_params.tutorial = p.text("poisson_variant") == "tutorial";
       const bool poisson = c.filter == tech::FilterKind::poisson || c.filter == tech::FilterKind::stratified ||
                            c.filter == tech::FilterKind::rotated;
+      const bool hashed = c.filter == tech::FilterKind::stratified || c.filter == tech::FilterKind::rotated;
+      // A Poisson filter's setting beside a filter that has no taps to apply it to does nothing, which is an
+      // error, named where it was given; except a light's own setting under a command-line --filter, which
+      // replaces the light's filter and so the settings that belong to it.
+      auto unused = [&](const char* key, const std::string& why) {
+        if (o.filter && !o.params.count(key)) return;
+        throw tech::TechniqueError((o.params.count(key) ? "params." + std::string(key) : p.where(key)) + ": " + why +
+                                   ", not " + std::string(tech::to_string(c.filter)));
+      };
+      if (c.filter_params.pcf_taps && !poisson && c.filter != tech::FilterKind::early_bail)
+        unused("pcf_taps", "makes the taps of the poisson, stratified, rotated and early-bail filters PCF lookups");
+      if (c.filter_params.stratify_world && !hashed)
+        unused("stratify", "world seeds the stratified and rotated filters");
+      c.filter_params.pcf_taps &= poisson || c.filter == tech::FilterKind::early_bail;
+      c.filter_params.stratify_world &= hashed;
       // Named as the command line's field when it gave the variant (the CLI shows its option), else the light's.
       if (c.filter_params.tutorial && !poisson)
         throw tech::TechniqueError((o.params.count("poisson_variant") ? "params.poisson_variant"

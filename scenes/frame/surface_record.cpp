@@ -14,7 +14,7 @@ SurfaceRecord::SurfaceRecord(int w, int h, size_t light_count)
       covered(pixels(), 0),
       position(pixels(), glm::vec3(0.0f)),
       normal(pixels(), glm::vec3(0.0f)),
-      depth(pixels(), 0.0f),
+      depth(pixels(), 1.0f),  // the cleared depth (CONVENTIONS.md) where nothing is drawn, as in a depth buffer
       lit_facing(pixels() * light_count, 0),
       visibility(pixels() * light_count, 1.0f) {}
 

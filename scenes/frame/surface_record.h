@@ -27,7 +27,7 @@ struct SurfaceRecord {
   // Unit normal of the triangle's plane (from the position's screen derivatives over the 2x2 quad), on the side
   // the camera sees.
   std::vector<glm::vec3> normal;
-  std::vector<float> depth;         // window depth in [0, 1] as the depth test saw it (before d24 rounding)
+  std::vector<float> depth;         // window depth in [0, 1] as the depth test saw it (before d24 rounding); 1 uncovered
   // Per pixel and light (index pixel · lights + light).
   // lit_facing: the light reaches the point (n·l > 0 with the shading normal, inside the spot cone and range)
   // and its instance receives shadows, so the light's technique was asked for a shadow factor.

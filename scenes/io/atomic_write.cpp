@@ -87,6 +87,12 @@ void WriteBatch::stage(const std::filesystem::path& path,
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw IoError(path, "directory " + dir.string() + " does not exist");
   remove_stale_temporaries(path);
+  for (size_t i = 0; i < staged_.size(); ++i)
+    if (staged_[i].path == path) {  // staged again: the earlier temporary goes
+      fs::remove(staged_[i].temporary, ec);
+      staged_.erase(staged_.begin() + std::ptrdiff_t(i));
+      break;
+    }
   const fs::path tmp = temporary_name(path);
   try {
     write(tmp);
@@ -118,13 +124,31 @@ void WriteBatch::commit() {
     }
   }
   staged_.clear();
+  created_.clear();
+}
+
+void WriteBatch::create_directories(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  if (dir.empty()) return;
+  std::vector<fs::path> missing;  // innermost first
+  std::error_code ec;
+  for (fs::path p = dir; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    missing.push_back(p);
+    if (p == p.parent_path()) break;
+  }
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (!fs::create_directory(*it, ec) && ec)
+      throw IoError(dir, "cannot create the folder " + it->string() + " (" + ec.message() + ")");
+    created_.push_back(*it);
+  }
+  if (!fs::is_directory(dir, ec)) throw IoError(dir, "exists and is not a folder");
 }
 
 WriteBatch::~WriteBatch() {
-  for (const Staged& s : staged_) {
-    std::error_code ec;
-    std::filesystem::remove(s.temporary, ec);
-  }
+  std::error_code ec;
+  for (const Staged& s : staged_) std::filesystem::remove(s.temporary, ec);
+  // Innermost first; remove() leaves a folder that is not empty (something else was put there).
+  for (auto it = created_.rbegin(); it != created_.rend(); ++it) std::filesystem::remove(*it, ec);
 }
 
 void write_atomically(const std::filesystem::path& path,

@@ -136,7 +136,7 @@ MomentParams moment_params(MomentKind kind, const ShadowConfig& c) {
     m.light_bleed = float(p.number("light_bleed"));
     m.min_variance = float(p.number("evsm_min_variance"));
     m.positive = float(p.number("evsm_positive"));
-    m.negative = float(p.number("evsm_negative"));
+    if (m.kind == MomentKind::evsm4) m.negative = float(p.number("evsm_negative"));
   }
   return m;
 }

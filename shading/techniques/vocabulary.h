@@ -208,6 +208,10 @@ inline constexpr ParamSpec kVsmParams[] = {kBlurParam, kMomentMipsParam, kLightB
 inline constexpr ParamSpec kEvsmParams[] = {
     kEvsmPositiveParam, kEvsmNegativeParam, kEvsmMinVarianceParam, kBlurParam, kMomentMipsParam, kLightBleedParam,
 };
+// evsm2 has no negative warp: --evsm-negative with it is an unknown option, not one that silently does nothing.
+inline constexpr ParamSpec kEvsm2Params[] = {
+    kEvsmPositiveParam, kEvsmMinVarianceParam, kBlurParam, kMomentMipsParam, kLightBleedParam,
+};
 inline constexpr ParamSpec kMomentsParam = {
     "moments", "--moments", ParamKind::choice, "none",
     "cascades, cube: each slice's or face's map compared with the filter (none), or turned into blurred "
@@ -327,7 +331,7 @@ inline constexpr TechniqueInfo kTechniques[] = {
      kVsmParams, false},
     {Technique::evsm2, "evsm2", "exponential variance shadow map: positive warp exp(c z), two moments",
      light_bit(LightType::directional) | light_bit(LightType::spot), true, 1024, DepthFormat::d32f, "window-depth",
-     kEvsmParams, false},
+     kEvsm2Params, false},
     {Technique::evsm4, "evsm4", "exponential variance shadow map: positive and negative warps, four moments",
      light_bit(LightType::directional) | light_bit(LightType::spot), true, 1024, DepthFormat::d32f, "window-depth",
      kEvsmParams, false},

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <limits>
 
+#include <glm/geometric.hpp>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -129,6 +131,73 @@ TEST(SceneErrors, EmptyAndBrokenMeshes) {
   EXPECT_EQ(json_error("{}"), "scene.json: objects: the scene has no triangles");
 }
 
+// Geometry that would vanish without a word: flattened, degenerate or beyond float range; and colours no
+// surface has.
+TEST(SceneErrors, DegenerateGeometryAndImpossibleMaterials) {
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"}, "transform": {"scale": [1, 0, 1]}}]})"),
+            "scene.json: objects[0].transform: is singular: it flattens the object to nothing (a zero scale, or a "
+            "matrix of rank below 3)");
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"},
+                           "transform": {"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,0]}}]})"),
+            "scene.json: objects[0].transform.matrix: not an affine transform: its last row must be 0, 0, 0, 1");
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"},
+                           "transform": {"translate": [3e38, 0, 0], "scale": [3e38, 3e38, 3e38]}}]})"),
+            "scene.json: objects[0].transform: takes the object's vertices beyond the range of 32-bit floats");
+  // A scene of zero-area triangles alone draws nothing: an error. Beside other objects such a mesh is drawn
+  // (tests/scenes/frame/bad_geometry_test.cpp) and named in a warning.
+  EXPECT_EQ(json_error(R"({"objects": [{"mesh": {"positions": [0, 0, 0, 0, 0, 0, 0, 0, 0], "indices": [0, 1, 2]}}]})"),
+            "scene.json: objects: every triangle of the scene has zero area: nothing would be drawn or cast a shadow");
+  EXPECT_EQ(json_error(R"({"objects": [{"mesh": {"positions": [0, 0, 0, 1, 1, 1, 2, 2, 2], "indices": [0, 1, 2]}}]})"),
+            "scene.json: objects: every triangle of the scene has zero area: nothing would be drawn or cast a shadow");
+  const scenes::Scene mixed = scenes::build_scene(
+      scenes::parse_scene_json(R"({"objects": [{"primitive": {"type": "box"}, "transform": {"scale": [-1, 1, 1]}},
+        {"mesh": {"positions": [0, 0, 0, 0, 0, 0, 0, 0, 0], "indices": [0, 1, 2]}}]})", "scene.json"),
+      {{}, "scene.json"});  // a mirror is no flattening
+  ASSERT_EQ(mixed.warnings.size(), 1u);
+  EXPECT_EQ(mixed.warnings[0], "scene.json: objects[1].mesh: every triangle has zero area (its vertices coincide or "
+                               "lie on a line): it draws nothing");
+  EXPECT_EQ(json_error(R"({"materials": [{"name": "m", "base_color": [-1, 2, 0.5]}],
+                           "objects": [{"primitive": {"type": "box"}, "material": "m"}]})"),
+            "scene.json: materials[0].base_color: each component must lie in [0, 1] (linear reflectance and alpha)");
+  // A light direction so long that its squared length overflows still points somewhere.
+  const scenes::Scene lit = scenes::build_scene(
+      scenes::parse_scene_json(R"({"objects": [{"primitive": {"type": "box"}}],
+        "lights": [{"type": "directional", "to_light": [3e38, 3e38, 0]}]})", "scene.json"),
+      {{}, "scene.json"});
+  ASSERT_EQ(lit.lights.size(), 1u);
+  EXPECT_NEAR(glm::length(glm::normalize(lit.lights[0].direction) - glm::normalize(glm::vec3(-1, -1, 0))), 0.0f, 1e-6f);
+}
+
+TEST(SceneErrors, GltfOutsideTheSpecification) {
+  const auto dir = testsupport::temp_dir("scene_errors_gltf_spec");
+  const std::string d = dir.generic_string();
+  {
+    testsupport::GltfFixture f;  // a node matrix whose last row is not 0, 0, 0, 1
+    f.node({{"mesh", f.mesh(f.positions(kTriangle))}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0}}});
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "matrix")); }),
+              d + "/matrix.gltf: nodes[0].matrix: not an affine transform: its last row must be 0, 0, 0, 1");
+  }
+  {
+    testsupport::GltfFixture f;  // a spot whose inner cone is wider than its outer one
+    f.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    f.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"type", "spot"}, {"spot", {{"innerConeAngle", 1.0}, {"outerConeAngle", 0.5}}}}};
+    f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
+    f.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    const std::string e = error_of([&] { scenes::load_scene(f.write_gltf(dir, "cones")); });
+    EXPECT_EQ(e.rfind(d + "/cones.gltf: nodes[1].extensions.KHR_lights_punctual.light.spot: innerConeAngle 1.0", 0), 0u) << e;
+  }
+  {
+    testsupport::GltfFixture f;  // a GLB whose header says version 1
+    f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
+    std::vector<uint8_t> bytes = f.glb_bytes();
+    bytes[4] = 1;
+    const auto path = testsupport::GltfFixture::write_bytes(dir / "v1.glb", bytes);
+    EXPECT_EQ(error_of([&] { scenes::load_scene(path); }),
+              d + "/v1.glb: malformed GLB: header version 1 (only glTF 2.0 binaries, version 2, are read)");
+  }
+}
+
 TEST(SceneErrors, BrokenGltf) {
   const auto dir = testsupport::temp_dir("scene_errors_gltf");
   const std::string d = dir.generic_string();
@@ -195,8 +264,12 @@ TEST(SceneErrors, BrokenGltf) {
               d + "/zeros_huge.gltf: meshes[0].primitives[0].attributes.POSITION (accessors[0]): count 268435456 "
                   "without a bufferView exceeds 65536 (the elements an accessor of zeros may have: the file's buffer "
                   "bytes, at least 65536)");
+    // A small one is within the limit, and then what it holds is three zeros: a triangle of no area, which is
+    // all the file has, so nothing would be drawn.
     f.doc["accessors"][0]["count"] = 3;
-    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "zeros_small")); }), "");
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "zeros_small")); }),
+              d + "/zeros_small.gltf: every triangle of the file's scene has zero area: nothing would be drawn or cast "
+                  "a shadow");
   }
   {
     // Issue 23: node i lists node i + 1 twice (a DAG): 2^n paths before; now refused at once.

@@ -11,6 +11,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/scene_queries_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/shadow_settings_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/stage_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/scenes/io_atomic_write_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/io_exr_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/io_exr_image_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/io_png_test.cpp

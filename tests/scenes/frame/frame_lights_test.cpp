@@ -60,6 +60,7 @@ TEST(FrameLights, OverridesReachTheTechniqueSettings) {
   o.offset_factor = -2.0f, o.offset_units = 8.0f, o.normal_offset = 0.1f;
   o.poisson_spread = 1.0f / 350.0f;
   o.params["stratify"] = std::string("world");
+  o.filter = scenes::ShadowFilter::stratified;  // the filter world seeds apply to
   o.params["fit"] = std::string("fixed");
   const frame::ResolvedLight r = frame::resolve_light(sun, 0, o);
   EXPECT_EQ(r.config.bias.constant, 0.02f);
@@ -96,6 +97,20 @@ TEST(FrameLights, BadOverridesNameTheField) {
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.offset_units = INFINITY; }).rfind("bias.offset_units: ", 0), 0u);
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.params["stratify"] = std::string("diagonal"); }).rfind("lights[0].shadow.params.stratify: ", 0), 0u);
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.offset_factor = -3.0f; }), "no error");  // signed is fine
+  // Poisson settings beside a filter without Poisson taps would do nothing (the sun reads with pcf): errors,
+  // named as the command line's fields; under a --filter of the command line the light's own are dropped.
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.params["stratify"] = std::string("world"); }),
+            "params.stratify: world seeds the stratified and rotated filters, not pcf");
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.params["pcf_taps"] = true; }),
+            "params.pcf_taps: makes the taps of the poisson, stratified, rotated and early-bail filters PCF lookups, "
+            "not pcf");
+  scenes::Light poisson_sun = sun;
+  poisson_sun.shadow.filter = scenes::ShadowFilter::poisson;
+  poisson_sun.shadow.params["pcf_taps"] = true;
+  frame::FrameConfig hard;
+  hard.filter = scenes::ShadowFilter::hard;
+  EXPECT_FALSE(frame::resolve_light(poisson_sun, 0, hard).config.filter_params.pcf_taps);
+  EXPECT_TRUE(frame::resolve_light(poisson_sun, 0, frame::FrameConfig{}).config.filter_params.pcf_taps);
   // The tutorial's arithmetic is a variant of the Poisson filters only (the tutorial's sun reads with pcf); an
   // override is named as the command line's field, which the CLI shows as its option.
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.params["poisson_variant"] = std::string("tutorial"); }),
