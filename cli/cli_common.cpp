@@ -57,12 +57,12 @@ Size2 parse_size(const std::string& text, const std::string& option) {
   return {int(w), int(h)};
 }
 
-std::pair<float, float> parse_float_pair(const std::string& text, const std::string& option) {
+std::pair<float, float> parse_float_pair(const std::string& text, const std::string& option, std::string_view format) {
   const size_t comma = text.find(',');
   float a = 0, b = 0;
   if (comma == std::string::npos || !parse_float(std::string_view(text).substr(0, comma), a) ||
       !parse_float(std::string_view(text).substr(comma + 1), b))
-    throw CliError(option, "expected two finite numbers as FACTOR,UNITS, got '" + text + "'");
+    throw CliError(option, "expected two finite numbers separated by a comma (" + std::string(format) + "), got '" + text + "'");
   return {a, b};
 }
 
@@ -72,11 +72,17 @@ std::string lower_extension(const std::filesystem::path& path) {
   return ext;
 }
 
-int check_threads(int threads) {
-  if (threads < -1 || threads > kMaxThreads)
-    throw CliError("--threads", std::to_string(threads) + " is outside 0.." + std::to_string(kMaxThreads) +
+void add_threads_option(CLI::App& app, std::optional<int>& threads) {
+  app.add_option_function<int>("--threads", [&threads](const int& v) { threads = v; },
+                               "Worker threads (0: inline; default: all cores)");
+}
+
+int check_threads(const std::optional<int>& threads) {
+  if (!threads) return -1;
+  if (*threads < 0 || *threads > kMaxThreads)
+    throw CliError("--threads", std::to_string(*threads) + " is outside 0.." + std::to_string(kMaxThreads) +
                                     " (leave it out for all cores)");
-  return threads;
+  return *threads;
 }
 
 void check_output_dir(const std::string& file, const std::string& option) {
@@ -93,6 +99,19 @@ bool is_model_file(const std::filesystem::path& p) {
   return e == ".gltf" || e == ".glb";
 }
 
+}  // namespace
+
+void check_scene_exists(const std::string& name) {
+  const std::filesystem::path path(name);
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec) || scenes::is_builtin_scene(name)) return;
+  if (std::filesystem::exists(path, ec)) throw CliError(name, "not a regular file");
+  if (name.find('/') != std::string::npos || path.has_extension()) throw CliError(name, "no such file");
+  scenes::builtin_scene(name);  // throws `NAME: unknown built-in scene (known: ...)`
+}
+
+namespace {
+
 scenes::Scene load_any(const std::string& name, const scenes::StageOptions* stage, std::vector<std::string>* notes) {
   const std::filesystem::path path(name);
   std::error_code ec;
@@ -105,10 +124,8 @@ scenes::Scene load_any(const std::string& name, const scenes::StageOptions* stag
     return scenes::load_scene(path);
   }
   // A folder named like a built-in scene (`eval tutorial --out tutorial` makes one) does not hide the scene.
-  if (scenes::is_builtin_scene(name)) return scenes::builtin_scene(name);
-  if (std::filesystem::exists(path, ec)) throw CliError(name, "not a regular file");
-  if (name.find('/') != std::string::npos || path.has_extension()) throw CliError(name, "no such file");
-  return scenes::builtin_scene(name);  // throws `NAME: unknown built-in scene (known: ...)`
+  check_scene_exists(name);
+  return scenes::builtin_scene(name);
 }
 
 }  // namespace

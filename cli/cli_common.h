@@ -10,7 +10,9 @@
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -53,8 +55,8 @@ struct Size2 {
 Size2 parse_size(const std::string& text, const std::string& option);
 // A side length in 1..raster::kMaxTargetSize.
 int check_side(long long value, const std::string& option);
-// "A,B" as two finite floats.
-std::pair<float, float> parse_float_pair(const std::string& text, const std::string& option);
+// "A,B" as two finite floats; `format` names the two in the error ("AZ,EL").
+std::pair<float, float> parse_float_pair(const std::string& text, const std::string& option, std::string_view format);
 
 // A scene file (JSON, .gltf, .glb) when `name` names an existing file, else a built-in scene. A name that looks
 // like a path (a '/' or an extension) but is no file is reported as a missing file. With `stage`, a .gltf/.glb
@@ -99,10 +101,16 @@ class Stopwatch {
 };
 
 // Fails early (before any long work) when the folder an output file goes to does not exist.
-// The --threads value: -1 (all cores, the default), 0 (inline) up to kMaxThreads; anything else is a CliError
-// on the option (issue 23: 10^8 threads ended in "out of memory").
+// The --threads option, left out for all cores, 0 (inline) up to kMaxThreads given; anything else is a CliError
+// on the option (issue 23: 10^8 threads ended in "out of memory"). check_threads returns what raster::Renderer
+// takes (-1 for all cores).
 inline constexpr int kMaxThreads = 1024;
-int check_threads(int threads);
+void add_threads_option(CLI::App& app, std::optional<int>& threads);
+int check_threads(const std::optional<int>& threads);
+
+// A scene argument names a regular file or a built-in scene; otherwise a CliError naming it (what loading it
+// would say), so that a run with several scenes fails before the first renders.
+void check_scene_exists(const std::string& name);
 
 void check_output_dir(const std::string& file, const std::string& option);
 

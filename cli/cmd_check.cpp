@@ -24,6 +24,7 @@
 #include "cli/json_output.h"
 #include "cli/render_line.h"
 #include "scenes/io/atomic_write.h"
+#include "scenes/io/io_error.h"
 #include "raster/simd/isa.h"
 
 namespace cli {
@@ -149,14 +150,18 @@ struct Rendered {
   std::vector<fs::path> maps;  // EXR files, golden name = "<entry>-maps/<file name>"
 };
 
-Rendered render_entry(const Entry& e, const fs::path& scratch) {
+// The render line of an entry, its outputs in `scratch`.
+std::vector<std::string> entry_words(const Entry& e, const fs::path& scratch) {
   std::vector<std::string> words = {e.scene};
   words.insert(words.end(), e.args.begin(), e.args.end());
-  const fs::path out = scratch / (e.name + ".png");
-  words.insert(words.end(), {"--out", out.string()});
-  const fs::path maps = scratch / (e.name + "-maps");
-  if (e.maps) words.insert(words.end(), {"--maps", maps.string()});
-  render_line(words, "entry " + e.name);
+  words.insert(words.end(), {"--out", (scratch / (e.name + ".png")).string()});
+  if (e.maps) words.insert(words.end(), {"--maps", (scratch / (e.name + "-maps")).string()});
+  return words;
+}
+
+Rendered render_entry(const Entry& e, const fs::path& scratch) {
+  render_line(entry_words(e, scratch), "entry " + e.name);
+  const fs::path out = scratch / (e.name + ".png"), maps = scratch / (e.name + "-maps");
   Rendered r{out, {}};
   std::error_code ec;
   if (e.maps && fs::exists(maps, ec))
@@ -172,19 +177,28 @@ int run_check(const CheckArgs& a) {
   Progress progress;
   nlohmann::json results = nlohmann::json::array();
   size_t failed = 0, passed = 0;
+  // Every entry's line is checked before the first renders (and before goldens are looked for).
+  for (const Entry& e : m.entries) check_render_line(entry_words(e, scratch.path), "entry " + e.name);
 
   if (a.update) {
     // Every entry renders first; then every golden is replaced together (and stale maps of an entry removed).
+    // The folders the batch makes go again if an entry fails.
     scenes::io::WriteBatch batch;
     std::error_code ec;
-    fs::create_directories(m.goldens, ec);
-    if (ec) throw CliError(m.goldens.string(), "cannot create the goldens folder (" + ec.message() + ")");
+    auto make_folder = [&](const fs::path& dir) {
+      try {
+        batch.create_directories(dir);
+      } catch (const scenes::io::IoError& e) {
+        throw CliError(dir.string(), "cannot create the goldens folder (" + e.reason() + ")");
+      }
+    };
+    make_folder(m.goldens);
     std::vector<fs::path> stale;
     for (const Entry& e : m.entries) {
       progress.update("rendering " + e.name);
       const Rendered r = render_entry(e, scratch.path);
       auto stage_copy = [&](const fs::path& from, const fs::path& to) {
-        fs::create_directories(to.parent_path(), ec);
+        make_folder(to.parent_path());
         batch.stage(to, [&](const fs::path& tmp) { fs::copy_file(from, tmp, fs::copy_options::overwrite_existing); });
       };
       stage_copy(r.frame, m.goldens / (e.name + ".png"));

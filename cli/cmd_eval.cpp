@@ -22,6 +22,7 @@
 #include "cli/light_choice.h"
 #include "raster/renderer.h"
 #include "scenes/frame/frame.h"
+#include "scenes/frame/frame_lights.h"
 #include "scenes/io/atomic_write.h"
 #include "scenes/io/io_error.h"
 #include "scenes/io/png_frame.h"
@@ -39,7 +40,7 @@ namespace tech = shading::tech;
 
 struct EvalArgs {
   std::string scene, techniques, filters, biases, sizes, size = "1280x720", out = "eval";
-  int threads = -1;
+  std::optional<int> threads;  // --threads, left out for all cores
   int near_radius = 2;
   std::optional<bool> cull_front;  // --cull-front / --no-cull-front for every combination
   std::string shard;               // --shard I/N: only combinations K with K mod N = I
@@ -184,7 +185,7 @@ int run_eval(const EvalArgs& a) {
   choose_light(scene, a.light);
   const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);  // once for the sweep
   print_notes(notes);
-  raster::Renderer renderer(a.threads);
+  raster::Renderer renderer(check_threads(a.threads));
   frame::FrameConfig base;
   base.width = size.width, base.height = size.height;
   base.export_maps = false;
@@ -192,7 +193,22 @@ int run_eval(const EvalArgs& a) {
   reference::ScoreOptions options;
   options.near_radius = a.near_radius;
 
+  scenes::io::WriteBatch out_folder;  // the --out folder, made now so that a run that cannot make it fails first;
+  try {                               // removed again (when empty) if the run fails
+    out_folder.create_directories(a.out);
+  } catch (const scenes::io::IoError& e) {
+    throw CliError("--out", "cannot create directory " + a.out + " (" + e.reason() + ")");
+  }
+
   try {
+    // Every combination's lights resolved (technique for the light type, map size, parameters) before anything
+    // renders, so a sweep with a bad combination fails before the first.
+    for (const Combination& c : combos) {
+      frame::FrameConfig config = base;
+      config.technique = c.technique, config.filter = c.filter, config.bias = c.bias, config.map_size = c.map_size;
+      for (size_t i = 0; i < scene.lights.size(); ++i) frame::resolve_light(scene.lights[i], i, config);
+    }
+
     Progress progress;
     progress.update("reference: casting rays");
     const reference::FrameReference ref = reference::reference_for(scene, base, renderer, -1.0f, &textures);
@@ -263,10 +279,9 @@ int run_eval(const EvalArgs& a) {
         {"sweep", {{"combinations", sweep_size}, {"shard", shard.index}, {"shards", shard.count}}},
         {"shimmer", {{"camera_pixels", a.shimmer_pixels}, {"light_degrees", a.shimmer_degrees}}},
         {"results", rows}};
-    std::filesystem::create_directories(a.out, ec);
-    if (ec) throw CliError("--out", "cannot create directory " + a.out + " (" + ec.message() + ")");
     const std::filesystem::path dir(a.out);
     write_eval_report(dir, report, sheets);
+    out_folder.commit();
   } catch (const frame::FrameError& e) {
     throw as_cli_error(e);
   }
@@ -287,7 +302,7 @@ Command add_eval_command(CLI::App& parent) {
   app->add_option("--sizes", args->sizes, "Comma-separated shadow map sides, 16..16384 (default: each light's own)");
   app->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (default 1280x720)");
   app->add_option("--light", args->light, "NAME or INDEX: score that light of the scene alone (default: every light)");
-  app->add_option("--threads", args->threads, "Worker threads (0: inline; default: all cores)");
+  add_threads_option(*app, args->threads);
   app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
   app->add_flag_callback("--no-cull-front", [args] { args->cull_front = false; }, "Render front faces into the maps");
   app->add_option("--near-radius", args->near_radius, "Pixels from an exact shadow boundary counted as near it (default 2)");

@@ -104,7 +104,8 @@ nlohmann::json inspect_map(const InspectArgs& a, const std::string& file, std::o
 nlohmann::json inspect_frame(const InspectArgs& a, const std::string& file) {
   if (!a.png.empty()) throw CliError("--png", file + " is a frame: previews are for depth maps");
   if (!a.channel.empty()) throw CliError("--channel", file + " is a frame: --channel picks a depth map's channel");
-  const OIIO::ImageBuf img = read_image(file);
+  int bits = 0;
+  const OIIO::ImageBuf img = read_image(file, &bits);
   const OIIO::ImageSpec& spec = img.spec();
   const OIIO::ImageBufAlgo::PixelStats st = OIIO::ImageBufAlgo::computePixelStats(img);
   nlohmann::json channels = nlohmann::json::array();
@@ -118,7 +119,7 @@ nlohmann::json inspect_frame(const InspectArgs& a, const std::string& file) {
           {"format", "png"},
           {"width", spec.width},
           {"height", spec.height},
-          {"bits_per_channel", int(spec.format.size() * 8)},
+          {"bits_per_channel", bits},
           {"colour_space", spec.get_string_attribute("oiio:ColorSpace", "unknown")},
           {"channels", channels}};
 }
@@ -190,7 +191,7 @@ int run_inspect(const InspectArgs& a) {
   std::optional<std::pair<float, float>> range;
   if (!a.range.empty()) {
     if (a.png.empty()) throw CliError("--range", "only applies to --png previews");
-    range = parse_float_pair(a.range, "--range");
+    range = parse_float_pair(a.range, "--range", "LOW,HIGH");
     if (!(range->second > range->first)) throw CliError("--range", "expected LO,HI with LO < HI");
   }
   if (!a.png.empty()) {

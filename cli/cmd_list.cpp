@@ -1,11 +1,13 @@
 // `shadowlab list`: the built-in scenes, shadow techniques (with the light types each serves, whether it is
 // built, its map defaults and its parameters), filters, bias modes and depth formats, from the vocabulary's
 // tables: as aligned text, or with --json as one document (docs/cli/list.schema.json).
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -97,10 +99,28 @@ int run_list(bool json) {
   print_table("filter", scenes::filter_names());
   print_table("bias", scenes::bias_mode_names());
   print_table("format", scenes::depth_format_names());
+  // One line per parameter, naming the techniques that take it (a parameter several share is listed once; its
+  // default, where they differ, per technique).
+  std::vector<std::string_view> keys;
   for (const tech::TechniqueInfo& t : tech::kTechniques)
     for (const tech::ParamSpec& p : t.params)
-      print_line("param", p.key,
-                 std::string(p.help) + " (" + std::string(p.option) + ", default " + std::string(p.fallback) + ")");
+      if (std::find(keys.begin(), keys.end(), p.key) == keys.end()) keys.push_back(p.key);
+  for (std::string_view key : keys) {
+    const tech::ParamSpec* first = nullptr;
+    std::string names, defaults;
+    bool same = true;
+    for (const tech::TechniqueInfo& t : tech::kTechniques)
+      for (const tech::ParamSpec& p : t.params)
+        if (p.key == key) {
+          if (!first) first = &p;
+          same &= p.fallback == first->fallback;
+          names += (names.empty() ? "" : ", ") + std::string(t.name);
+          defaults += (defaults.empty() ? "" : ", ") + std::string(p.fallback) + " (" + std::string(t.name) + ")";
+        }
+    print_line("param", key,
+               std::string(first->help) + " (" + std::string(first->option) + ", default " +
+                   (same ? std::string(first->fallback) : defaults) + "; " + names + ")");
+  }
   for (const tech::ParamSpec& p : tech::kFilterParams)
     print_line("param", p.key,
                "every technique with a map: " + std::string(p.help) + " (" + std::string(p.option) + ", default " +

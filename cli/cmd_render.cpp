@@ -29,8 +29,10 @@
 #include "raster/renderer.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/frame/frame.h"
+#include "scenes/io/atomic_write.h"
 #include "scenes/io/exr_image.h"
 #include "scenes/io/exr_map.h"
+#include "scenes/io/io_error.h"
 #include "scenes/io/png_frame.h"
 #include "scenes/shadow_settings.h"
 #include "scenes/stage.h"
@@ -46,7 +48,7 @@ struct RenderArgs {
   std::string technique, filter, bias, depth_format, size = "1280x720", maps, out = "frame.png", aliasing;
   std::string aov, aov_out;  // --aov position,normal,visibility,depth  --aov-out FILE.exr
   std::optional<long long> shadow_size;  // given or not (a plain value: jobs outlive the parser that filled them)
-  int threads = -1;
+  std::optional<int> threads;  // --threads, left out for all cores
   int frames = 1;
   bool stats = false;
   std::optional<bool> cull_front;  // --cull-front / --no-cull-front
@@ -146,6 +148,7 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
 
 // Every check of a job's arguments that needs no rendering, so a bad job (or batch line) fails before any work.
 void check_job(const RenderArgs& a) {
+  check_scene_exists(a.scene);
   parse_size(a.size, "--size");
   check_name(a.technique, "--technique", "technique", scenes::parse_technique(a.technique).has_value(),
              scenes::technique_names());
@@ -173,7 +176,7 @@ void check_job(const RenderArgs& a) {
   }
   if (a.up != "y" && a.up != "z") throw CliError("--up", "expected y or z, got '" + a.up + "'");
   if (!a.sun.empty()) {
-    const auto [az, el] = parse_float_pair(a.sun, "--sun");
+    const auto [az, el] = parse_float_pair(a.sun, "--sun", "AZ,EL");
     if (!(el > 0.0f && el <= 90.0f)) throw CliError("--sun", "expected AZ,EL with an elevation above 0 and at most 90 degrees");
     (void)az;
   }
@@ -181,6 +184,7 @@ void check_job(const RenderArgs& a) {
   // Each output: its kind, its folder, and its frame field (the folder of a pattern is checked as it would be
   // for frame 1).
   const std::string stem = scene_stem(a.scene);
+  if (a.out.empty()) throw CliError("--out", "is empty: give a .png file name");
   auto check_file = [&](const std::string& pattern, const char* option, const char* ext) {
     if (pattern.empty()) return;
     has_frame_field(pattern, option);
@@ -198,73 +202,67 @@ void check_job(const RenderArgs& a) {
     std::error_code ec;
     if (std::filesystem::exists(first, ec) && !std::filesystem::is_directory(first, ec))
       throw CliError("--maps", first + " exists and is not a directory");
+    check_output_dir(first, "--maps");  // the folder is made, as the files are, but not the path to it
   }
 }
 
-// Writes frame `number`'s outputs: maps, aliasing heat maps, AOVs and the PNG, staged and committed together (a
-// failure on any leaves none of the new files, and no maps directory this call created). Returns the files.
+// Stages frame `number`'s outputs in `batch`: maps, aliasing heat maps, AOVs and the PNG. The run commits the
+// batch when every job has succeeded, so a failure anywhere (a later frame, a later scene or batch line) leaves
+// none of the run's new files, nor a maps folder it made. Returns the files.
 nlohmann::json write_outputs(const RenderArgs& a, const frame::Frame& result,
-                             const std::vector<frame::AovChannel>& aovs, int number, bool text) {
+                             const std::vector<frame::AovChannel>& aovs, int number, bool text,
+                             scenes::io::WriteBatch& batch) {
   const std::string stem = scene_stem(a.scene);
   nlohmann::json files = nlohmann::json::array();
-  std::filesystem::path created_dir;
-  try {
-    scenes::io::WriteBatch batch;  // inside the try: its temporaries are gone before the handler runs
-    if (!a.maps.empty()) {
-      const std::filesystem::path dir = expand_name(a.maps, stem, number);
-      std::error_code ec;
-      if (!std::filesystem::exists(dir, ec)) {
-        std::filesystem::create_directories(dir, ec);
-        if (ec) throw CliError("--maps", "cannot create directory " + dir.string() + " (" + ec.message() + ")");
-        created_dir = dir;
-      }
-      for (const frame::NamedMap& m : frame::export_maps(result)) {
-        const std::filesystem::path file = dir / (m.name + ".exr");
-        scenes::io::write_exr_map(batch, file, m.map);
-        files.push_back(file.string());
-      }
+  if (!a.maps.empty()) {
+    const std::filesystem::path dir = expand_name(a.maps, stem, number);
+    try {
+      batch.create_directories(dir);
+    } catch (const scenes::io::IoError& e) {
+      throw CliError("--maps", "cannot create directory " + dir.string() + " (" + e.reason() + ")");
     }
-    if (!a.aliasing.empty()) {
-      size_t measured = 0;
-      for (const frame::AliasingImage& img : result.aliasing) measured += img.measured > 0;
-      if (measured == 0)
-        throw CliError("--aliasing", "no light of this frame has a measured pixel (measured: shadowmap, cascades, "
-                                     "lispsm, frustum-faces, esm, vsm, evsm2, evsm4, pcss, on pixels facing the "
-                                     "light)");
-      const std::filesystem::path base(expand_name(a.aliasing, stem, number));
-      for (size_t i = 0; i < result.aliasing.size(); ++i) {
-        const frame::AliasingImage& img = result.aliasing[i];
-        if (img.measured == 0) continue;
-        if (text)
-          std::printf("aliasing %s (%s): max %.3g, p95 %.3g, mean %.3g pixels per texel over %zu lit-facing pixels; "
-                      "storage factor %.3g\n",
-                      result.lights[i].name.c_str(), std::string(shading::tech::to_string(result.lights[i].technique)).c_str(),
-                      double(img.max), double(img.p95), double(img.mean), img.measured, double(img.storage_factor()));
-        std::filesystem::path file = base;
-        if (measured > 1) file.replace_filename(base.stem().string() + "-" + result.lights[i].name + ".png");
-        scenes::io::write_png(batch, file, frame::aliasing_heat_map(img));
-        files.push_back(file.string());
-      }
+    for (const frame::NamedMap& m : frame::export_maps(result)) {
+      const std::filesystem::path file = dir / (m.name + ".exr");
+      scenes::io::write_exr_map(batch, file, m.map);
+      files.push_back(file.string());
     }
-    if (!aovs.empty()) {
-      const std::string file = expand_name(a.aov_out, stem, number);
-      scenes::io::write_exr_image(batch, file, frame::aov_image(*result.surface, aovs));
-      files.push_back(file);
-    }
-    const std::string out = expand_name(a.out, stem, number);
-    scenes::io::write_png(batch, out, result.color);
-    files.push_back(out);
-    batch.commit();
-  } catch (...) {
-    std::error_code ec;
-    if (!created_dir.empty()) std::filesystem::remove(created_dir, ec);  // only if it is still empty
-    throw;
   }
+  if (!a.aliasing.empty()) {
+    size_t measured = 0;
+    for (const frame::AliasingImage& img : result.aliasing) measured += img.measured > 0;
+    if (measured == 0)
+      throw CliError("--aliasing", "no light of this frame has a measured pixel (measured: shadowmap, cascades, "
+                                   "lispsm, frustum-faces, esm, vsm, evsm2, evsm4, pcss, on pixels facing the "
+                                   "light)");
+    const std::filesystem::path base(expand_name(a.aliasing, stem, number));
+    for (size_t i = 0; i < result.aliasing.size(); ++i) {
+      const frame::AliasingImage& img = result.aliasing[i];
+      if (img.measured == 0) continue;
+      if (text)
+        std::printf("aliasing %s (%s): max %.3g, p95 %.3g, mean %.3g pixels per texel over %zu lit-facing pixels; "
+                    "storage factor %.3g\n",
+                    result.lights[i].name.c_str(), std::string(shading::tech::to_string(result.lights[i].technique)).c_str(),
+                    double(img.max), double(img.p95), double(img.mean), img.measured, double(img.storage_factor()));
+      std::filesystem::path file = base;
+      if (measured > 1) file.replace_filename(base.stem().string() + "-" + result.lights[i].name + ".png");
+      scenes::io::write_png(batch, file, frame::aliasing_heat_map(img));
+      files.push_back(file.string());
+    }
+  }
+  if (!aovs.empty()) {
+    const std::string file = expand_name(a.aov_out, stem, number);
+    scenes::io::write_exr_image(batch, file, frame::aov_image(*result.surface, aovs));
+    files.push_back(file);
+  }
+  const std::string out = expand_name(a.out, stem, number);
+  scenes::io::write_png(batch, out, result.color);
+  files.push_back(out);
   return files;
 }
 
-// One job: one scene, its frames, its outputs. Text lines (--stats, aliasing) unless `text` is false.
-nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, const std::string& label) {
+// One job: one scene, its frames, its outputs (staged in `outputs`). Text lines (--stats, aliasing) unless `text` is false.
+nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, const std::string& label,
+                          scenes::io::WriteBatch& outputs) {
   const Size2 size = parse_size(a.size, "--size");
   const std::string stem = scene_stem(a.scene);
   const bool sequence = has_frame_field(a.out, "--out");
@@ -274,10 +272,11 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   scenes::StageOptions stage;
   stage.ground = a.ground;
   if (!a.sun.empty()) {
-    const auto [az, el] = parse_float_pair(a.sun, "--sun");
+    const auto [az, el] = parse_float_pair(a.sun, "--sun", "AZ,EL");
     stage.sun = glm::vec2(az, el);
   }
   stage.z_up = a.up == "z";
+  stage.camera_chosen = a.camera.rfind("orbit:", 0) == 0;
   std::vector<std::string> notes;
   scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
   // Loaded once for every frame; a missing texture fails here, before anything is rendered or written.
@@ -310,7 +309,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   config.tone_map = look.tone_map;
   config.background = look.background;
 
-  raster::Renderer renderer(a.threads);
+  raster::Renderer renderer(check_threads(a.threads));
   std::optional<frame::Frame> result;  // Frame has no empty state: the last frame rendered
   frame::FrameCache cache;             // projective maps live across frames: only changed casters are rebuilt
   nlohmann::json frames = nlohmann::json::array();
@@ -328,7 +327,11 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
       const std::string what = e.what();
       const size_t colon = what.find(": ");
       if (colon == std::string::npos) throw;
-      throw CliError(option_for_field(light_field(what.substr(0, colon), chosen_light)), what.substr(colon + 2));
+      // A field of the scene file (not one the command line set) is named with the file, as loading errors are.
+      std::string where = option_for_field(light_field(what.substr(0, colon), chosen_light));
+      std::error_code ec;
+      if (where.rfind("--", 0) != 0 && std::filesystem::is_regular_file(a.scene, ec)) where = a.scene + ": " + where;
+      throw CliError(where, what.substr(colon + 2));
     }
     const double total = watch.ms();
     if (text && a.stats) {
@@ -355,7 +358,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
     }
     frames.push_back(frame_json(i + 1, total, *result, config));
     // An image sequence writes every frame; otherwise the last frame is the one written.
-    if (sequence || i + 1 == a.frames) frames.back()["outputs"] = write_outputs(a, *result, aovs, i + 1, text);
+    if (sequence || i + 1 == a.frames) frames.back()["outputs"] = write_outputs(a, *result, aovs, i + 1, text, outputs);
   }
   return {{"scene", a.scene}, {"name", stem}, {"frames", frames}};
 }
@@ -391,10 +394,38 @@ std::vector<std::pair<std::string, RenderArgs>> read_batch(const std::string& fi
     if (first == std::string::npos || line[first] == '#') continue;
     if (jobs.size() >= 100000) throw CliError(file, "more than 100000 jobs");
     const std::string where = file + ":" + std::to_string(number);
+    if (line.find('\0') != std::string::npos) throw CliError(where, "holds a NUL byte (not a text line)");
+    char open = 0;  // the quote a word is inside, as CLI11's split reads them
+    for (size_t i = 0; i < line.size(); ++i) {
+      if (open == 0 && (line[i] == '\'' || line[i] == '"')) open = line[i];
+      else if (line[i] == open) open = 0;
+    }
+    if (open != 0) throw CliError(where, std::string("a quote (") + open + ") is not closed");
     jobs.emplace_back(where, parse_job(where, [&](CLI::App& parser) { parser.parse(line, false); }));
   }
   if (jobs.empty()) throw CliError(file, "holds no render line");
   return jobs;
+}
+
+// No two jobs of a run write the same file or maps folder (the later would silently replace the earlier's):
+// compared by the names of their first frames, where any two jobs' names meet if they meet at all but for
+// sequences whose patterns differ.
+void check_distinct_outputs(const std::vector<std::pair<std::string, RenderArgs>>& jobs) {
+  std::map<std::string, std::string> owner;  // lexically normal path -> the job that writes it
+  for (const auto& [where, a] : jobs) {
+    const std::string stem = scene_stem(a.scene);
+    const std::pair<const std::string*, const char*> outputs[] = {
+        {&a.out, "--out"}, {&a.maps, "--maps"}, {&a.aliasing, "--aliasing"}, {&a.aov_out, "--aov-out"}};
+    for (const auto& [pattern, option] : outputs) {
+      if (pattern->empty()) continue;
+      const std::string name = std::filesystem::path(expand_name(*pattern, stem, 1)).lexically_normal().string();
+      const std::string job = where.empty() ? "scene " + a.scene : where;
+      const auto [it, fresh] = owner.emplace(name, job);
+      if (!fresh)
+        throw CliError(where.empty() ? std::string(option) : where + ": " + option,
+                       name + " is written by " + it->second + " as well");
+    }
+  }
 }
 
 int run_render(const RenderArgs& top) {
@@ -430,7 +461,9 @@ int run_render(const RenderArgs& top) {
       throw CliError(where, e.what());
     }
   }
+  check_distinct_outputs(jobs);
   Progress progress;
+  scenes::io::WriteBatch outputs;  // every job's files, renamed into place together once all have succeeded
   nlohmann::json done = nlohmann::json::array();
   const Stopwatch watch;
   size_t frames = 0;
@@ -440,7 +473,7 @@ int run_render(const RenderArgs& top) {
     const std::string label = jobs.size() > 1 ? "job " + std::to_string(k + 1) + "/" + std::to_string(jobs.size()) + " " + a.scene + ": " : "";
     nlohmann::json j;
     try {
-      j = render_job(a, !top.json, progress, label);
+      j = render_job(a, !top.json, progress, label, outputs);
     } catch (const CliError& e) {
       if (where.empty()) throw;
       throw CliError(where, e.what());
@@ -450,6 +483,7 @@ int run_render(const RenderArgs& top) {
     frames += j["frames"].size();
     done.push_back(std::move(j));
   }
+  outputs.commit();
   if (top.json) {
     print_json({{"command", "render"},
                 {"batch", top.batch.empty() ? nlohmann::json(nullptr) : nlohmann::json(top.batch)},
@@ -472,7 +506,7 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
   app->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (default 1280x720)");
   app->add_option_function<long long>(
       "--shadow-size", [args](const long long& v) { args->shadow_size = v; }, "Shadow map side in texels");
-  app->add_option("--threads", args->threads, "Worker threads (0: inline; default: all cores)");
+  add_threads_option(*app, args->threads);
   app->add_option("--frames", args->frames,
                   "Render N frames (timing, --animate); the last is written, or each with a frame field in --out");
   app->add_flag("--stats", args->stats, "Print per-frame timings and triangle counts");
@@ -536,13 +570,31 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
 
 }  // namespace
 
-nlohmann::json render_line(const std::vector<std::string>& args, const std::string& where) {
+namespace {
+RenderArgs parse_line(const std::vector<std::string>& args, const std::string& where) {
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes a vector last argument first
-  const RenderArgs a = parse_job(where, [&](CLI::App& parser) { parser.parse(reversed); });
+  return parse_job(where, [&](CLI::App& parser) { parser.parse(reversed); });
+}
+}  // namespace
+
+void check_render_line(const std::vector<std::string>& args, const std::string& where) {
+  const RenderArgs a = parse_line(args, where);
+  try {
+    check_job(a);
+  } catch (const CliError& e) {
+    throw CliError(where, e.what());
+  }
+}
+
+nlohmann::json render_line(const std::vector<std::string>& args, const std::string& where) {
+  const RenderArgs a = parse_line(args, where);
   Progress quiet;  // (a terminal still sees progress)
   try {
     check_job(a);
-    return render_job(a, false, quiet, where + ": ");
+    scenes::io::WriteBatch outputs;
+    nlohmann::json j = render_job(a, false, quiet, where + ": ", outputs);
+    outputs.commit();
+    return j;
   } catch (const CliError& e) {
     throw CliError(where, e.what());
   }

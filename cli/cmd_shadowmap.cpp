@@ -33,7 +33,7 @@ struct WorldDepthShader {
 
 struct ShadowmapArgs {
   std::string scene, light_matrix, size, format, cull = "none", offset, out;
-  int threads = -1;
+  std::optional<int> threads;  // --threads, left out for all cores
   int repeat = 0;
 };
 
@@ -49,7 +49,7 @@ int run_shadowmap(const ShadowmapArgs& a) {
   raster::DrawState state;
   state.cull = *cull;
   if (!a.offset.empty()) {
-    const auto [factor, units] = parse_float_pair(a.offset, "--offset");
+    const auto [factor, units] = parse_float_pair(a.offset, "--offset", "FACTOR,UNITS");
     state.polygon_offset = {factor, units};
   }
   check_threads(a.threads);
@@ -68,7 +68,7 @@ int run_shadowmap(const ShadowmapArgs& a) {
   if (soup.triangle_count() == 0) throw CliError(a.scene, "the scene has no triangles");
   scene = {};  // only the soup is needed from here on
 
-  raster::Renderer renderer(a.threads);
+  raster::Renderer renderer(check_threads(a.threads));
   raster::DepthTarget target(size.width, size.height, *format);
   const WorldDepthShader shader{light.view_proj};
   const auto pass = [&] {
@@ -118,7 +118,7 @@ Command add_shadowmap_command(CLI::App& parent) {
   app->add_option("--format", args->format, "Depth format: d16, d24 or d32f")->required();
   app->add_option("--cull", args->cull, "Face culling: none, back or front (default none)");
   app->add_option("--offset", args->offset, "Polygon offset FACTOR,UNITS as glPolygonOffset takes them");
-  app->add_option("--threads", args->threads, "Worker threads (0: inline; default: all cores)");
+  add_threads_option(*app, args->threads);
   app->add_option("--repeat", args->repeat, "Time the pass N times after a warm-up; prints median and min");
   app->add_option("--out", args->out, "Output EXR file")->required();
   return {app, [args] { return run_shadowmap(*args); }};

@@ -43,7 +43,7 @@ ChannelChoice choose_depth_channel(const std::vector<std::string>& channels, con
   throw CliError(file, "no depth channel among " + list + " (choose one with --channel)");
 }
 
-OIIO::ImageBuf read_image(const std::string& file) {
+OIIO::ImageBuf read_image(const std::string& file, int* file_bits) {
   const ImageKind kind = image_kind(file);
   scenes::io::check_exr_header(file);  // an attribute claiming gigabytes, before OpenEXR allocates them
   const scenes::io::QuietStderr quiet;  // libpng's own line on a broken file; ours follows
@@ -62,6 +62,7 @@ OIIO::ImageBuf read_image(const std::string& file) {
   }
   // The header first: a file that claims an absurd size is refused before anything is allocated.
   const OIIO::ImageSpec spec = in->spec();
+  if (file_bits) *file_bits = int(spec.format.size() * 8);  // the stored samples, before the conversion below
   if (spec.width < 1 || spec.height < 1 || spec.width > 65536 || spec.height > 65536 || spec.nchannels < 1 ||
       uint64_t(spec.width) * uint64_t(spec.height) * uint64_t(spec.nchannels) > (uint64_t(1) << 30))
     throw CliError(file, "image size " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +

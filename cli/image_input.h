@@ -30,8 +30,9 @@ ChannelChoice choose_depth_channel(const std::vector<std::string>& channels, con
                                    const std::string& file);
 
 // A whole image through OpenImageIO as float pixels (PNG bytes / 255, unconverted: the file's own sRGB values),
-// top row first. Throws CliError naming the file when it cannot be read.
-OIIO::ImageBuf read_image(const std::string& file);
+// top row first; `file_bits`, when given, receives the bits per sample the file stores (8 for shadowlab's PNGs).
+// Throws CliError naming the file when it cannot be read.
+OIIO::ImageBuf read_image(const std::string& file, int* file_bits = nullptr);
 
 SHADOWLAB_ISA_END
 }  // namespace cli

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.h"
@@ -30,6 +31,9 @@ glm::mat4 matrix_of(const nlohmann::json& value, const std::string& file, const 
       throw CliError(file, key + "[" + std::to_string(i) + "]: expected a finite number that fits in a float");
     out[i] = float(d);
   }
+  // A singular matrix maps the scene onto a plane, a line or a point: no depth map can come of it.
+  if (!(std::fabs(glm::determinant(glm::dmat4(m))) > 0.0))
+    throw CliError(file, key + ": a singular matrix (determinant 0): it maps the scene onto less than a volume");
   return m;
 }
 

@@ -3,6 +3,7 @@
 // metrics, --fail-over and --diff-out; inspect on EXRs written by oiiotool (channels R, Y, depth.Z); the golden
 // workflow of `check` failing on a one-pixel change and passing after --update; batches equal to separate runs;
 // shards whose merge equals the unsharded run; image sequences; --version; the README's quick start as written.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -359,8 +360,78 @@ TEST_F(CliScripting, LightPicksOneLightByNameOrIndex) {
   const std::string bulb = R"({"name": "bulb", "type": "point", "position": [0, 3, 0], "intensity": 100,
       "shadow": {"technique": "paraboloid", "params": {"split_plane": "q"}}})";
   std::ofstream(dir / "three.json") << "{" << objects << R"(, "lights": [)" << key << ", " << fill << ", " << bulb << "]}";
-  testsupport::expect_bad_run(dir, "render three.json --light bulb --out x.png", "lights[2].shadow.params.split_plane",
-                              "x.png");
+  testsupport::expect_bad_run(dir, "render three.json --light bulb --out x.png",
+                              "three.json: lights[2].shadow.params.split_plane", "x.png");
+}
+
+// The files in `dir` (names only, sorted), for checks that a failed run added none.
+std::vector<std::string> listing(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string name = fs::relative(e.path(), dir).string();
+    if (name != "stdout.txt" && name != "stderr.txt") names.push_back(name);  // the harness's own (cli_run.h)
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A run that fails anywhere (its second scene, a later batch line or frame, a check entry, an eval combination)
+// leaves none of its files and no folder it made; and what the run-through of 2026-12-04 found unclear is named.
+TEST_F(CliScripting, AFailedRunLeavesNothingBehind) {
+  const std::string bulb = R"({"objects": [{"primitive": {"type": "box"}}], "lights": [{"type": "point",
+      "position": [0, 3, 0], "intensity": 100, "shadow": {"technique": "paraboloid", "params": {"split_plane": "q"}}}]})";
+  std::ofstream(dir / "bad_plane.json") << bulb;
+  std::ofstream(dir / "jobs_missing.txt") << "tutorial --size 32x18 --out a.png\nnosuch.json --out b.png\n";
+  std::ofstream(dir / "jobs_late.txt") << "tutorial --size 32x18 --out a.png\nbad_plane.json --size 32x18 --out b.png\n";
+  std::ofstream(dir / "jobs_same.txt") << "tutorial --size 32x18 --out a.png\nduel --size 32x18 --out a.png\n";
+  std::ofstream(dir / "jobs_quote.txt") << "tutorial --size 32x18 --out 'a.png\n";
+  std::ofstream(dir / "manifest.json") << R"({"goldens": "gold", "entries": [{"name": "a", "scene": "tutorial",
+      "args": ["--size", "32x18"]}, {"name": "b", "scene": "bad_plane.json", "args": ["--size", "32x18"]}]})";
+  std::ofstream(dir / "manifest_args.json") << R"({"goldens": "gold2", "entries": [{"name": "a", "scene": "tutorial",
+      "args": ["--filter", "soft"]}]})";
+  fs::create_directory(dir / "f_3.png");  // in the way of a sequence's third frame
+  const std::vector<std::string> before = listing(dir);
+  testsupport::expect_bad_run(dir, "render tutorial nosuch --size 32x18 --out '{scene}.png'", "nosuch");
+  testsupport::expect_bad_run(dir, "render tutorial bad_plane.json --size 32x18 --out '{scene}.png' --maps '{scene}-maps'",
+                              "bad_plane.json: lights[0].shadow.params.split_plane");
+  testsupport::expect_bad_run(dir, "render --batch jobs_missing.txt", "jobs_missing.txt:2: nosuch.json");
+  testsupport::expect_bad_run(dir, "render --batch jobs_late.txt", "jobs_late.txt:2: bad_plane.json");
+  testsupport::expect_bad_run(dir, "render --batch jobs_same.txt", "jobs_same.txt:2: --out");
+  testsupport::expect_bad_run(dir, "render --batch jobs_quote.txt", "jobs_quote.txt:1");
+  testsupport::expect_bad_run(dir, "render tutorial tutorial --size 32x18 --out '{scene}.png'", "--out");
+  testsupport::expect_bad_run(dir, "render tutorial --size 32x18 --frames 4 --out 'f_%d.png'", "f_3.png");
+  testsupport::expect_bad_run(dir, "render tutorial --size 32x18 --maps no/such/maps --out m.png", "--maps");
+  testsupport::expect_bad_run(dir, "check manifest.json --update", "entry b: ./bad_plane.json: lights[0].shadow.params.split_plane");
+  testsupport::expect_bad_run(dir, "check manifest_args.json", "entry a: --filter");  // before looking for goldens
+  testsupport::expect_bad_run(dir, "eval tutorial --techniques shadowmap,cube --size 32x18 --out ev", "--techniques");
+  EXPECT_EQ(listing(dir), before);
+  // Options and words that do nothing or are not there.
+  testsupport::expect_bad_run(dir, "render tutorial --threads -1 --out t.png", "--threads", "t.png");
+  testsupport::expect_bad_run(dir, "render tutorial --filter hard --pcf-taps --out t.png", "--pcf-taps", "t.png");
+  testsupport::expect_bad_run(dir, "render duel --technique evsm2 --evsm-negative 3 --out t.png", "--evsm-negative", "t.png");
+  testsupport::expect_bad_run(dir, "render tutorial --out ''", "--out");
+  testsupport::expect_bad_run(dir, "frobnicate", "frobnicate");
+  testsupport::expect_bad_run(dir, "render tutorial --colour --out t.png", "--colour", "t.png");
+  const Outcome sun = shadowlab(dir, "render tutorial --sun 10 --out t.png");
+  EXPECT_THAT(sun.err, ::testing::HasSubstr("(AZ,EL)")) << sun.err;
+  EXPECT_EQ(listing(dir), before);
+  // The same hard-filtered light with and without a light's own pcf_taps under --filter hard: the command line's
+  // filter replaces the light's, and the Poisson setting that belonged to it.
+  const std::string lights = (fs::path(SHADOWLAB_SOURCE_DIR) / "docs/examples/lights.json").string();
+  // A sweep whose second combination is bad fails before the first renders (nothing printed, no folder).
+  const Outcome sweep = shadowlab(dir, "eval '" + lights + "' --light ceiling --techniques pyramid --sizes 16,17 "
+                                       "--size 32x18 --out ev");
+  EXPECT_EQ(sweep.code, 2);
+  EXPECT_EQ(sweep.out, "");
+  EXPECT_EQ(sweep.err.rfind("shadowlab: error: --sizes: ", 0), 0u) << sweep.err;
+  EXPECT_EQ(listing(dir), before);
+  ASSERT_EQ(shadowlab(dir, "render '" + lights + "' --light ceiling --filter hard --size 48x27 --out h1.png").code, 0);
+  ASSERT_EQ(shadowlab(dir, "render '" + lights + "' --light ceiling --filter pcf --size 48x27 --out p1.png").code, 0);
+  EXPECT_NE(testsupport::slurp(dir / "h1.png"), testsupport::slurp(dir / "p1.png"));
+  // inspect reports the PNG's own sample size.
+  const nlohmann::json info = json_run(dir, "inspect h1.png --json", "inspect");
+  ASSERT_FALSE(info.empty());
+  EXPECT_EQ(info["files"][0]["bits_per_channel"], 8);
 }
 
 // The README's quick start, run as written (the binary path mapped to this build's).

@@ -220,6 +220,7 @@ TEST_F(EvalCli, RenderAovAlignsWithThePng) {
   EXPECT_LT(highest, 63);
   EXPECT_EQ(a[size_t(63) * 96 + 48], 0.0f);
   EXPECT_EQ(py[size_t(63) * 96 + 48], 0.0f);
+  EXPECT_EQ(z[size_t(63) * 96 + 48], 1.0f);  // the sky at the cleared depth, as in a depth buffer
 }
 
 TEST_F(EvalCli, RenderAovBadInput) {
