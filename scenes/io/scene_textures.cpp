@@ -27,8 +27,9 @@ SceneTextures load_scene_textures(const Scene& scene) {
         else
           it = loaded.emplace(m.texture, load_texture(m.texture)).first;
       } catch (const IoError& e) {
-        throw IoError(e.file(), "base-colour texture of material '" + m.name + "' (materials[" + std::to_string(i) +
-                                    "]): " + e.reason());
+        // Named by the material's name alone: the scene's own index is not the file's (a glTF material without
+        // a name is named by its key in the file, `materials[K]`).
+        throw IoError(e.file(), "base-colour texture of material '" + m.name + "': " + e.reason());
       }
     }
     out.base_color[i] = it->second;
