@@ -148,7 +148,6 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
 
 // Every check of a job's arguments that needs no rendering, so a bad job (or batch line) fails before any work.
 void check_job(const RenderArgs& a) {
-  check_scene_exists(a.scene);
   parse_size(a.size, "--size");
   check_name(a.technique, "--technique", "technique", scenes::parse_technique(a.technique).has_value(),
              scenes::technique_names());
@@ -204,6 +203,9 @@ void check_job(const RenderArgs& a) {
       throw CliError("--maps", first + " exists and is not a directory");
     check_output_dir(first, "--maps");  // the folder is made, as the files are, but not the path to it
   }
+  // Last: an option missing its value takes the next word (`--size --out f.png` makes f.png a scene), and the
+  // option's own error says more than "no such file".
+  check_scene_exists(a.scene);
 }
 
 // Stages frame `number`'s outputs in `batch`: maps, aliasing heat maps, AOVs and the PNG. The run commits the
@@ -440,16 +442,6 @@ int run_render(const RenderArgs& top) {
       a.scene = scene;
       jobs.emplace_back("", a);
     }
-    if (top.scenes.size() > 1) {
-      auto needs_scene = [&](const std::string& pattern, const char* option) {
-        if (!pattern.empty() && !has_scene_field(pattern))
-          throw CliError(option, "several scenes would write to the same file: put {scene} in the name");
-      };
-      needs_scene(top.out, "--out");
-      needs_scene(top.maps, "--maps");
-      needs_scene(top.aliasing, "--aliasing");
-      needs_scene(top.aov_out, "--aov-out");
-    }
   }
   const Shard shard = parse_shard(top.shard, "--shard");
   // Every job is checked before the first renders.
@@ -459,6 +451,18 @@ int run_render(const RenderArgs& top) {
     } catch (const CliError& e) {
       if (where.empty()) throw;
       throw CliError(where, e.what());
+    }
+  }
+  if (top.batch.empty()) {
+    if (top.scenes.size() > 1) {
+      auto needs_scene = [&](const std::string& pattern, const char* option) {
+        if (!pattern.empty() && !has_scene_field(pattern))
+          throw CliError(option, "several scenes would write to the same file: put {scene} in the name");
+      };
+      needs_scene(top.out, "--out");
+      needs_scene(top.maps, "--maps");
+      needs_scene(top.aliasing, "--aliasing");
+      needs_scene(top.aov_out, "--aov-out");
     }
   }
   check_distinct_outputs(jobs);

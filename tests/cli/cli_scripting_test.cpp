@@ -410,6 +410,7 @@ TEST_F(CliScripting, AFailedRunLeavesNothingBehind) {
   testsupport::expect_bad_run(dir, "render tutorial --filter hard --pcf-taps --out t.png", "--pcf-taps", "t.png");
   testsupport::expect_bad_run(dir, "render duel --technique evsm2 --evsm-negative 3 --out t.png", "--evsm-negative", "t.png");
   testsupport::expect_bad_run(dir, "render tutorial --out ''", "--out");
+  testsupport::expect_bad_run(dir, "render tutorial --size --out t.png", "--size", "t.png");  // --out taken as the size
   testsupport::expect_bad_run(dir, "frobnicate", "frobnicate");
   testsupport::expect_bad_run(dir, "render tutorial --colour --out t.png", "--colour", "t.png");
   const Outcome sun = shadowlab(dir, "render tutorial --sun 10 --out t.png");
