@@ -64,6 +64,17 @@ tinygltf::Model load_model(const std::filesystem::path& path, const std::string&
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keep_image, &data_uri_images);
+  // External files (buffers, images) must be regular files: tinygltf's own test accepts a folder (a buffer
+  // with uri "." then failed as std::bad_alloc); with this one it reports the file as not found, by name.
+  tinygltf::FsCallbacks fs{};
+  fs.FileExists = [](const std::string& name, void*) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(name, ec);
+  };
+  fs.ExpandFilePath = &tinygltf::ExpandFilePath;
+  fs.ReadWholeFile = &tinygltf::ReadWholeFile;
+  fs.WriteWholeFile = &tinygltf::WriteWholeFile;
+  loader.SetFsCallbacks(fs);
   tinygltf::Model model;
   std::string err, warn;
   const std::string dir = path.parent_path().empty() ? std::string(".") : path.parent_path().string();

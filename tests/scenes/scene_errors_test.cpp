@@ -188,6 +188,15 @@ TEST(SceneErrors, GltfOutsideTheSpecification) {
     EXPECT_EQ(e.rfind(d + "/cones.gltf: nodes[1].extensions.KHR_lights_punctual.light.spot: innerConeAngle 1.0", 0), 0u) << e;
   }
   {
+    testsupport::GltfFixture f;  // a buffer whose uri names a folder (was std::bad_alloc from the loader)
+    f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
+    const auto path = f.write_gltf(dir, "folder");
+    std::filesystem::remove(dir / "folder.bin");
+    std::filesystem::create_directory(dir / "folder.bin");
+    const std::string e = error_of([&] { scenes::load_scene(path); });
+    EXPECT_EQ(e.rfind(d + "/folder.gltf: malformed glTF: File not found", 0), 0u) << e;
+  }
+  {
     testsupport::GltfFixture f;  // a GLB whose header says version 1
     f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
     std::vector<uint8_t> bytes = f.glb_bytes();
