@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -189,7 +190,7 @@ int run_check(const CheckArgs& a) {
       try {
         batch.create_directories(dir);
       } catch (const scenes::io::IoError& e) {
-        throw CliError(dir.string(), "cannot create the goldens folder (" + e.reason() + ")");
+        throw CliError(dir.string(), e.reason());  // "cannot create the folder F (why)"
       }
     };
     make_folder(m.goldens);
@@ -199,7 +200,14 @@ int run_check(const CheckArgs& a) {
       const Rendered r = render_entry(e, scratch.path);
       auto stage_copy = [&](const fs::path& from, const fs::path& to) {
         make_folder(to.parent_path());
-        batch.stage(to, [&](const fs::path& tmp) { fs::copy_file(from, tmp, fs::copy_options::overwrite_existing); });
+        batch.stage(to, [&](const fs::path& tmp) {
+          // Read whole and written with write_bytes, which checks every write and the flush (a full disk is an
+          // error naming the golden, not a filesystem_error quoting the scratch files).
+          std::ifstream in(from, std::ios::binary);
+          const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+          if (!in && !in.eof()) throw scenes::io::IoError(tmp, "cannot read the rendered " + from.filename().string());
+          scenes::io::write_bytes(tmp, bytes.data(), bytes.size());
+        });
       };
       stage_copy(r.frame, m.goldens / (e.name + ".png"));
       std::set<std::string> kept;

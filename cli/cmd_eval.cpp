@@ -197,7 +197,7 @@ int run_eval(const EvalArgs& a) {
   try {                               // removed again (when empty) if the run fails
     out_folder.create_directories(a.out);
   } catch (const scenes::io::IoError& e) {
-    throw CliError("--out", "cannot create directory " + a.out + " (" + e.reason() + ")");
+    throw CliError("--out", e.reason());  // "cannot create the folder F (why)"
   }
 
   try {

@@ -221,7 +221,7 @@ nlohmann::json write_outputs(const RenderArgs& a, const frame::Frame& result,
     try {
       batch.create_directories(dir);
     } catch (const scenes::io::IoError& e) {
-      throw CliError("--maps", "cannot create directory " + dir.string() + " (" + e.reason() + ")");
+      throw CliError("--maps", e.reason());  // "cannot create the folder F (why)"
     }
     for (const frame::NamedMap& m : frame::export_maps(result)) {
       const std::filesystem::path file = dir / (m.name + ".exr");

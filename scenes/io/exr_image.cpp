@@ -12,6 +12,7 @@
 #include <set>
 
 #include "scenes/io/atomic_write.h"
+#include "scenes/io/exr_memory.h"
 #include "scenes/io/io_error.h"
 #include "raster/simd/isa.h"
 
@@ -71,9 +72,15 @@ void write_exr_image(WriteBatch& batch, const std::filesystem::path& path, const
       for (size_t i = 0; i < img.channels.size(); ++i)
         fb.insert(img.channels[i].name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(top_first[i].data()),
                                                    sizeof(float), w * sizeof(float)));
-      Imf::OutputFile out(tmp.c_str(), header);
-      out.setFrameBuffer(fb);
-      out.writePixels(img.height);
+      ExrMemoryStream bytes;  // encoded in memory, then written with every failure checked (exr_memory.h)
+      {
+        Imf::OutputFile out(bytes, header);
+        out.setFrameBuffer(fb);
+        out.writePixels(img.height);
+      }
+      bytes.save(tmp);
+    } catch (const IoError&) {
+      throw;
     } catch (const std::exception& e) {
       throw IoError(tmp, e.what());
     }

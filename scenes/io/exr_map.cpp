@@ -20,6 +20,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/io/atomic_write.h"
+#include "scenes/io/exr_memory.h"
 #include "scenes/io/exr_header.h"
 #include "scenes/io/io_error.h"
 #include "raster/simd/isa.h"
@@ -87,9 +88,13 @@ void write_file(const std::filesystem::path& file, const ExrMap& map) {
     std::copy_n(map.z.data() + (size_t(map.height) - 1 - r) * w, w, top_first.data() + r * w);
   Imf::FrameBuffer fb;
   fb.insert("Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(top_first.data()), sizeof(float), w * sizeof(float)));
-  Imf::OutputFile out(file.c_str(), header);
-  out.setFrameBuffer(fb);
-  out.writePixels(map.height);
+  ExrMemoryStream bytes;  // encoded in memory, then written with every failure checked (exr_memory.h)
+  {
+    Imf::OutputFile out(bytes, header);
+    out.setFrameBuffer(fb);
+    out.writePixels(map.height);
+  }  // the destructor completes the file (its line offset table)
+  bytes.save(file);
 }
 
 template <class Attr>
@@ -132,6 +137,8 @@ void write_exr_map(WriteBatch& batch, const std::filesystem::path& path, const E
   batch.stage(path, [&](const std::filesystem::path& tmp) {
     try {
       write_file(tmp, map);
+    } catch (const IoError&) {
+      throw;  // the write's own (a full disk): stage() names the destination
     } catch (const std::exception& e) {
       throw IoError(tmp, e.what());
     }
