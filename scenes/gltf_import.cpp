@@ -142,7 +142,7 @@ class Importer {
     walk(roots);
     if (out_.instances.empty()) fail("", "empty mesh: the file's scene has no triangles");
     bool area = false;
-    for (const Instance& inst : out_.instances) area = area || has_triangle_with_area(out_.meshes[inst.mesh]);
+    for (const Instance& inst : out_.instances) area = area || has_triangle_with_area(out_.meshes[inst.mesh], inst.transform);
     if (!area) fail("", "every triangle of the file's scene has zero area: nothing would be drawn or cast a shadow");
   }
 

@@ -72,10 +72,10 @@ std::vector<uint32_t> fan_to_list(std::span<const uint32_t> fan) {
   return out;
 }
 
-bool has_triangle_with_area(const Mesh& m) {
+bool has_triangle_with_area(const Mesh& m, const glm::mat4& transform) {
+  auto at = [&](size_t i) { return glm::vec3(transform * glm::vec4(m.positions[m.indices[i]], 1.0f)); };
   for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-    const glm::vec3 n = glm::cross(m.positions[m.indices[t + 1]] - m.positions[m.indices[t]],
-                                   m.positions[m.indices[t + 2]] - m.positions[m.indices[t]]);
+    const glm::vec3 a = at(t), n = glm::cross(at(t + 1) - a, at(t + 2) - a);
     if (glm::dot(n, n) > 0.0f) return true;
   }
   return false;

@@ -30,8 +30,9 @@ void flip_winding(Mesh& mesh);
 std::vector<uint32_t> strip_to_list(std::span<const uint32_t> strip);
 std::vector<uint32_t> fan_to_list(std::span<const uint32_t> fan);
 
-// Whether some triangle of the mesh has non-zero area (it stops at the first, so real meshes pay nothing).
-bool has_triangle_with_area(const Mesh& mesh);
+// Whether some triangle of the mesh has non-zero area once placed by `transform` (it stops at the first, so
+// real meshes pay nothing; a zero scale flattens every triangle).
+bool has_triangle_with_area(const Mesh& mesh, const glm::mat4& transform = glm::mat4(1.0f));
 
 // What is wrong with a mesh, or nothing: no triangles, an index count that is not a multiple of 3, an index
 // out of range, a non-finite position, texture coordinates or normals that do not match the positions.

@@ -89,7 +89,7 @@ class Builder {
 
   bool any_triangle_with_area() const {
     for (const Instance& inst : out_.instances)
-      if (has_triangle_with_area(out_.meshes[inst.mesh])) return true;
+      if (has_triangle_with_area(out_.meshes[inst.mesh], inst.transform)) return true;
     return false;
   }
 

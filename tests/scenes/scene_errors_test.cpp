@@ -188,6 +188,15 @@ TEST(SceneErrors, GltfOutsideTheSpecification) {
     EXPECT_EQ(e.rfind(d + "/cones.gltf: nodes[1].extensions.KHR_lights_punctual.light.spot: innerConeAngle 1.0", 0), 0u) << e;
   }
   {
+    testsupport::GltfFixture f;  // its only mesh under a node of zero scale (glTF's way of hiding one): nothing drawn
+    f.node({{"mesh", f.mesh(f.positions(kTriangle))}, {"scale", {0, 0, 0}}});
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "hidden")); }),
+              d + "/hidden.gltf: every triangle of the file's scene has zero area: nothing would be drawn or cast a "
+                  "shadow");
+    f.node({{"mesh", 0}});  // beside a visible instance it is fine
+    EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "half_hidden")); }), "");
+  }
+  {
     testsupport::GltfFixture f;  // a buffer whose uri names a folder (was std::bad_alloc from the loader)
     f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
     const auto path = f.write_gltf(dir, "folder");
