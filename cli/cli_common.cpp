@@ -37,12 +37,6 @@ bool parse_float(std::string_view s, float& out) {
 
 }  // namespace
 
-int check_side(long long value, const std::string& option) {
-  if (value < 1 || value > raster::kMaxTargetSize)
-    throw CliError(option, std::to_string(value) + " is outside 1.." + std::to_string(raster::kMaxTargetSize));
-  return int(value);
-}
-
 Size2 parse_size(const std::string& text, const std::string& option) {
   const size_t x = text.find_first_of("xX");
   long long w = 0, h = 0;

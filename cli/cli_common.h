@@ -53,8 +53,6 @@ struct Size2 {
 
 // "WxH" with both sides in 1..raster::kMaxTargetSize; `option` names the option in errors.
 Size2 parse_size(const std::string& text, const std::string& option);
-// A side length in 1..raster::kMaxTargetSize.
-int check_side(long long value, const std::string& option);
 // "A,B" as two finite floats; `format` names the two in the error ("AZ,EL").
 std::pair<float, float> parse_float_pair(const std::string& text, const std::string& option, std::string_view format);
 

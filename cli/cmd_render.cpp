@@ -159,7 +159,11 @@ void check_job(const RenderArgs& a) {
     throw CliError("--technique", "technique " + a.technique + " is not built yet");
   if (a.poisson_taps != 0 && a.poisson_taps != 4 && a.poisson_taps != 16)
     throw CliError("--poisson-taps", std::to_string(a.poisson_taps) + " is not 4 or 16");
-  if (a.shadow_size) check_side(*a.shadow_size, "--shadow-size");
+  // The widest bounds any technique takes; each technique's own (16 and up for most, 1 for projective, less than
+  // 16384 where maps share a target) are checked per light (vocabulary.h's map_size_problem).
+  if (a.shadow_size && (*a.shadow_size < 1 || *a.shadow_size > 16384))
+    throw CliError("--shadow-size", std::to_string(*a.shadow_size) +
+                                        " is outside 1..16384 (16..16384 for every technique but projective)");
   check_threads(a.threads);
   if (a.frames < 1 || a.frames > 1000000) throw CliError("--frames", "expected 1 to 1000000 frames");
   for (const shading::tech::ParamSpec* p : all_params())

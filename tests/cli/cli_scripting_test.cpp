@@ -411,6 +411,8 @@ TEST_F(CliScripting, AFailedRunLeavesNothingBehind) {
   testsupport::expect_bad_run(dir, "render duel --technique evsm2 --evsm-negative 3 --out t.png", "--evsm-negative", "t.png");
   testsupport::expect_bad_run(dir, "render tutorial --out ''", "--out");
   testsupport::expect_bad_run(dir, "render tutorial --size --out t.png", "--size", "t.png");  // --out taken as the size
+  const Outcome zero = shadowlab(dir, "render tutorial --shadow-size 0 --out t.png");
+  EXPECT_THAT(zero.err, ::testing::HasSubstr("16..16384 for every technique but projective")) << zero.err;
   testsupport::expect_bad_run(dir, "frobnicate", "frobnicate");
   testsupport::expect_bad_run(dir, "render tutorial --colour --out t.png", "--colour", "t.png");
   const Outcome sun = shadowlab(dir, "render tutorial --sun 10 --out t.png");
