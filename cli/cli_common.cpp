@@ -1,6 +1,8 @@
 // Option parsing, scene lookup and terminal progress shared by the commands (see cli_common.h).
 #include "cli/cli_common.h"
 
+#include "scenes/io/io_error.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -77,6 +79,14 @@ int check_threads(const std::optional<int>& threads) {
     throw CliError("--threads", std::to_string(*threads) + " is outside 0.." + std::to_string(kMaxThreads) +
                                     " (leave it out for all cores)");
   return *threads;
+}
+
+void make_folder(scenes::io::WriteBatch& batch, const std::filesystem::path& dir, const std::string& where) {
+  try {
+    batch.create_directories(dir);
+  } catch (const scenes::io::IoError& e) {
+    throw CliError(where, e.reason());  // "cannot create the folder F (why)"
+  }
 }
 
 void check_output_dir(const std::string& file, const std::string& option) {

@@ -17,6 +17,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "scenes/io/atomic_write.h"
+
 #include "scenes/scene.h"
 #include "scenes/stage.h"
 #include "raster/simd/isa.h"
@@ -111,6 +113,9 @@ int check_threads(const std::optional<int>& threads);
 void check_scene_exists(const std::string& name);
 
 void check_output_dir(const std::string& file, const std::string& option);
+// batch.create_directories(dir), its IoError a CliError on `where` (batch: it removes the folders again unless
+// committed).
+void make_folder(scenes::io::WriteBatch& batch, const std::filesystem::path& dir, const std::string& where);
 
 // A file's lower-case extension with its dot (".exr"), for format decisions.
 std::string lower_extension(const std::filesystem::path& path);

@@ -186,20 +186,13 @@ int run_check(const CheckArgs& a) {
     // The folders the batch makes go again if an entry fails.
     scenes::io::WriteBatch batch;
     std::error_code ec;
-    auto make_folder = [&](const fs::path& dir) {
-      try {
-        batch.create_directories(dir);
-      } catch (const scenes::io::IoError& e) {
-        throw CliError(dir.string(), e.reason());  // "cannot create the folder F (why)"
-      }
-    };
-    make_folder(m.goldens);
+    make_folder(batch, m.goldens, m.goldens.string());
     std::vector<fs::path> stale;
     for (const Entry& e : m.entries) {
       progress.update("rendering " + e.name);
       const Rendered r = render_entry(e, scratch.path);
       auto stage_copy = [&](const fs::path& from, const fs::path& to) {
-        make_folder(to.parent_path());
+        make_folder(batch, to.parent_path(), to.parent_path().string());
         batch.stage(to, [&](const fs::path& tmp) {
           // Read whole and written with write_bytes, which checks every write and the flush (a full disk is an
           // error naming the golden, not a filesystem_error quoting the scratch files).

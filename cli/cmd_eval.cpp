@@ -193,12 +193,10 @@ int run_eval(const EvalArgs& a) {
   reference::ScoreOptions options;
   options.near_radius = a.near_radius;
 
-  scenes::io::WriteBatch out_folder;  // the --out folder, made now so that a run that cannot make it fails first;
-  try {                               // removed again (when empty) if the run fails
-    out_folder.create_directories(a.out);
-  } catch (const scenes::io::IoError& e) {
-    throw CliError("--out", e.reason());  // "cannot create the folder F (why)"
-  }
+  // The --out folder, made now so that a run that cannot make it fails first; removed again (when empty) if the
+  // run fails.
+  scenes::io::WriteBatch out_folder;
+  make_folder(out_folder, a.out, "--out");
 
   try {
     // Every combination's lights resolved (technique for the light type, map size, parameters) before anything
