@@ -1,9 +1,11 @@
 // A render job's arguments, options and checks (see render_jobs.h).
 #include "cli/render_jobs.h"
 
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "cli/camera_choice.h"
 #include "cli/cli_common.h"
@@ -110,7 +112,7 @@ void check_job(const RenderArgs& a) {
   // The widest bounds any technique takes; each technique's own (16 and up for most, 1 for projective, less than
   // 16384 where maps share a target) are checked per light (vocabulary.h's map_size_problem).
   if (a.shadow_size && (*a.shadow_size < 1 || *a.shadow_size > 16384))
-    throw CliError("--shadow-size", std::to_string(*a.shadow_size) +
+    throw CliError("--shadow-size", a.shadow_size_text +
                                         " is outside 1..16384 (16..16384 for every technique but projective)");
   check_threads(a.threads);
   if (a.frames < 1 || a.frames > 1000000) throw CliError("--frames", "expected 1 to 1000000 frames");
@@ -238,8 +240,20 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
   app->add_option("--filter", args->filter, "Shadow filter for every light (see list)");
   app->add_option("--bias", args->bias, "Bias mode for every light (see list)");
   app->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (default 1280x720)");
-  app->add_option_function<long long>(
-      "--shadow-size", [args](const long long& v) { args->shadow_size = v; }, "Shadow map side in texels");
+  app->add_option_function<std::string>(
+      "--shadow-size",
+      [args](const std::string& text) {
+        // Read here rather than by CLI11, whose integer conversion saturates: 99999999999999999999 would be
+        // reported as 9223372036854775807. A number beyond long long is kept as out of bounds, with its text.
+        long long v = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (text.empty() || end != text.data() + text.size() ||
+            (ec != std::errc() && ec != std::errc::result_out_of_range))
+          throw CLI::ConversionError("--shadow-size", std::vector<std::string>{text});
+        args->shadow_size = ec == std::errc() ? v : std::numeric_limits<long long>::max();
+        args->shadow_size_text = text;
+      },
+      "Shadow map side in texels");
   add_threads_option(*app, args->threads);
   app->add_option("--frames", args->frames,
                   "Render N frames (timing, --animate); the last is written, or each with a frame field in --out");

@@ -26,6 +26,7 @@ struct RenderArgs {
   std::string technique, filter, bias, depth_format, size = "1280x720", maps, out = "frame.png", aliasing;
   std::string aov, aov_out;  // --aov position,normal,visibility,depth  --aov-out FILE.exr
   std::optional<long long> shadow_size;  // given or not (a plain value: jobs outlive the parser that filled them)
+  std::string shadow_size_text;         // as given, for messages
   std::optional<int> threads;  // --threads, left out for all cores
   int frames = 1;
   bool stats = false;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <cctype>
 #include <cerrno>
@@ -268,11 +269,34 @@ class Builder {
       lights.push_back(sun);
     }
     const Aabb bounds = scene_bounds(out_);
-    for (Light& l : lights) {
+    for (size_t i = 0; i < lights.size(); ++i) {
+      Light& l = lights[i];
       if (glm::dot(l.direction, l.direction) > 0.0f) l.direction = glm::normalize(l.direction);
-      if (l.type != LightType::directional && l.range <= 0.0f) l.range = reach(l.position, bounds);
+      if (l.type == LightType::directional) continue;
+      const float fit = reach(l.position, bounds);
+      if (l.range <= 0.0f) {
+        l.range = fit;
+      } else if ((l.type == LightType::point || l.type == LightType::hemispherical) && l.range > kFarRange * fit) {
+        // The maps of a point-like light store distance / range, and their biases are in those units: a range
+        // far beyond the scene leaves its depths a sliver of the map's values and its biases wide, so shadows
+        // go coarse or vanish (3e38 draws none). Drawn as given (the lighting's window is the author's), but said.
+        const std::string at = i < desc_.lights.size() ? ctx_.file + ": lights[" + std::to_string(i) + "].range"
+                                                        : "light '" + l.name + "': range";
+        out_.warnings.push_back(at + ": " + number(l.range) + " m is over " + number(kFarRange) +
+                                " times the scene's reach from the light (" + number(fit) +
+                                " m); its shadow maps store distance / range, so they lose depth resolution and "
+                                "shadows may vanish (0 fits the range to the scene)");
+      }
     }
     out_.lights = std::move(lights);
+  }
+
+  // A point-like light's range beyond this many times the scene's reach gets a warning (finish_lights).
+  static constexpr float kFarRange = 100.0f;
+  static std::string number(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", double(v));
+    return buf;
   }
 
   // Distance from p to the farthest corner of a box, a little more, at least a millimetre. In double: the

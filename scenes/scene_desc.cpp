@@ -87,7 +87,8 @@ std::optional<Problem> light_problem(const Light& l) {
   if (s.map_size > 16384) return Problem{"shadow.map_size", "must be between 1 and 16384"};
   if (auto why = shading::tech::map_size_problem(s.technique, int(s.map_size))) return Problem{"shadow.map_size", *why};
   if (s.poisson_taps != 4 && s.poisson_taps != 16) return Problem{"shadow.poisson_taps", "expected 4 or 16"};
-  if (!(s.poisson_spread > 0.0f)) return Problem{"shadow.poisson_spread", "must be positive"};
+  if (!(s.poisson_spread > 0.0f && s.poisson_spread <= 1.0f))
+    return Problem{"shadow.poisson_spread", "must be above 0 and at most 1 (the disc's radius in map coordinates)"};
   // Bias values are checked here, where the file is known, not first by the frame (issue 23: a scene's
   // bias_slope_max of -1 was reported as the --bias-slope-max option).
   const std::pair<const char*, float> non_negative[] = {{"shadow.bias.constant", s.bias.constant},

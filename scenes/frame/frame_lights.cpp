@@ -1,6 +1,7 @@
 // Light and shadow-setting resolution for the frame renderer (see frame_lights.h).
 #include "scenes/frame/frame_lights.h"
 
+#include <cstdio>
 #include <cctype>
 #include <algorithm>
 #include <cmath>
@@ -55,13 +56,20 @@ shading::Light lighting_light(const scenes::Light& l) {
   return s;
 }
 
+// A value as a message quotes it (%g: 1e+30, not thirty-one digits and six decimals).
+std::string shown(float v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", double(v));
+  return buf;
+}
+
 // An override if given, else the light's value; finite and >= 0 (> 0 with `positive`) unless `signed_ok`. A bad
 // value is named where it came from: the override's field, or the light's (`at` + ".shadow." + field).
 float checked_value(std::optional<float> given, float light_value, const std::string& at, const char* field,
                     bool positive = false, bool signed_ok = false) {
   const float v = given.value_or(light_value);
   if (!std::isfinite(v) || (!signed_ok && (positive ? !(v > 0.0f) : v < 0.0f)))
-    throw FrameError((given ? std::string(field) : at + ".shadow." + field) + ": " + std::to_string(v) +
+    throw FrameError((given ? std::string(field) : at + ".shadow." + field) + ": " + shown(v) +
                      " must be a finite number" + (signed_ok ? "" : positive ? " above 0" : " of 0 or more"));
   return v;
 }
@@ -94,6 +102,9 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
     throw FrameError((o.poisson_taps ? std::string("poisson_taps") : at + ".shadow.poisson_taps") + ": " +
                      std::to_string(c.filter_params.taps) + " is not 4 or 16");
   c.filter_params.spread = checked_value(o.poisson_spread, s.poisson_spread, at, "poisson_spread", true);
+  if (c.filter_params.spread > 1.0f)  // a radius beyond the whole map: every tap clamped to its edges
+    throw FrameError((o.poisson_spread ? std::string("poisson_spread") : at + ".shadow.poisson_spread") + ": " +
+                     shown(c.filter_params.spread) + " is above 1, the whole map's width");
   c.bias.constant = checked_value(o.bias_constant, c.bias.constant, at, "bias.constant");
   c.bias.slope = checked_value(o.bias_slope, c.bias.slope, at, "bias.slope");
   c.bias.slope_max = checked_value(o.bias_slope_max, c.bias.slope_max, at, "bias.slope_max");

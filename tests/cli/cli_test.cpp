@@ -191,6 +191,13 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
   expect_bad("render tutorial --shadow-size 0 --out f.png", "--shadow-size", "f.png");
   expect_bad("render tutorial --poisson-taps 5 --out f.png", "--poisson-taps", "f.png");
   expect_bad("render tutorial --poisson-spread -1 --out f.png", "--poisson-spread", "f.png");
+  expect_bad("render tutorial --filter poisson --poisson-spread 2 --out f.png", "--poisson-spread", "f.png");
+  {  // a side beyond long long is quoted as given, not as CLI11's saturated 9223372036854775807
+    const auto r = shadowlab(dir, "render tutorial --shadow-size 99999999999999999999 --out f.png");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err, "shadowlab: error: --shadow-size: 99999999999999999999 is outside 1..16384 (16..16384 for "
+                     "every technique but projective)\n");
+  }
   expect_bad("render tutorial --bias-constant nan --out f.png", "--bias-constant", "f.png");
   expect_bad("render tutorial --stratify diagonal --out f.png", "--stratify", "f.png");
   expect_bad("render tutorial --filter hard --poisson-variant tutorial --out f.png", "--poisson-variant", "f.png");

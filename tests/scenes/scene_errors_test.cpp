@@ -159,6 +159,24 @@ TEST(SceneErrors, DegenerateGeometryAndImpossibleMaterials) {
   EXPECT_EQ(json_error(R"({"materials": [{"name": "m", "base_color": [-1, 2, 0.5]}],
                            "objects": [{"primitive": {"type": "box"}, "material": "m"}]})"),
             "scene.json: materials[0].base_color: each component must lie in [0, 1] (linear reflectance and alpha)");
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"}}],
+                           "lights": [{"type": "spot", "position": [0, 3, 0], "direction": [0, -1, 0],
+                                       "shadow": {"filter": "poisson", "poisson_spread": 1.5}}]})"),
+            "scene.json: lights[0].shadow.poisson_spread: must be above 0 and at most 1 (the disc's radius in map "
+            "coordinates)");
+  // A point light's range far beyond the scene: its maps (distance / range) would lose their depths, and its
+  // shadows vanish at 3e38. Drawn as given, but said; a range of ten times the reach is not.
+  const auto point_light = [](const char* range) {
+    return scenes::build_scene(scenes::parse_scene_json(std::string(R"({"objects": [{"primitive": {"type": "box"}}],
+        "lights": [{"type": "point", "position": [0, 3, 0], "range": )") + range + "}]}", "scene.json"),
+                               {{}, "scene.json"});
+  };
+  const scenes::Scene far = point_light("3e38");
+  ASSERT_EQ(far.warnings.size(), 1u);
+  EXPECT_EQ(far.warnings[0].rfind("scene.json: lights[0].range: 3e+38 m is over 100 times the scene's reach from the "
+                                  "light (", 0), 0u) << far.warnings[0];
+  EXPECT_FLOAT_EQ(far.lights[0].range, 3e38f);
+  EXPECT_TRUE(point_light("30").warnings.empty());
   // A light direction so long that its squared length overflows still points somewhere.
   const scenes::Scene lit = scenes::build_scene(
       scenes::parse_scene_json(R"({"objects": [{"primitive": {"type": "box"}}],

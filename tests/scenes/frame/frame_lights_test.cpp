@@ -92,6 +92,10 @@ TEST(FrameLights, BadOverridesNameTheField) {
     return std::string("no error");
   };
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.poisson_spread = 0.0f; }).rfind("poisson_spread: ", 0), 0u);
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.poisson_spread = 1e30f; }),
+            "poisson_spread: 1e+30 is above 1, the whole map's width");
+  EXPECT_EQ(message([](frame::FrameConfig& o) { o.bias_constant = -0.5f; }),
+            "bias.constant: -0.5 must be a finite number of 0 or more");
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.bias_constant = -0.1f; }).rfind("bias.constant: ", 0), 0u);
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.bias_slope = NAN; }).rfind("bias.slope: ", 0), 0u);
   EXPECT_EQ(message([](frame::FrameConfig& o) { o.offset_units = INFINITY; }).rfind("bias.offset_units: ", 0), 0u);
