@@ -19,6 +19,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/gltf_accessors.h"
+#include "scenes/gltf_json_check.h"
 #include "scenes/mesh_ops.h"
 #include "scenes/scene_error.h"
 
@@ -87,6 +88,7 @@ tinygltf::Model load_model(const std::filesystem::path& path, const std::string&
       throw SceneError(file, "", "malformed GLB: header version " + std::to_string(version) +
                                      " (only glTF 2.0 binaries, version 2, are read)");
   }
+  if (auto p = gltf_json_problem(bytes.get(), length, binary)) throw SceneError(file, p->key, p->message);
   bool ok = false;
   try {
     ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.get(), length, dir)
@@ -122,10 +124,14 @@ class Importer {
         out_(out), read_(model, file_), materials_(model.materials.size(), -1) {}
 
   void run() {
-    // Compressed geometry would read as accessors without data: refuse it instead of importing zeros.
+    // A required extension the importer does not read would draw the file wrongly (compressed geometry as
+    // accessors without data, another material model's colours): glTF asks a loader to refuse it.
+    if (model_.asset.version.rfind("2.", 0) != 0)
+      fail("asset.version", "'" + model_.asset.version + "': this importer reads glTF 2.x");
     for (const std::string& ext : model_.extensionsRequired)
-      if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
-        fail("extensionsRequired", "'" + ext + "' is not supported");
+      if (std::find(std::begin(kReadExtensions), std::end(kReadExtensions), ext) == std::end(kReadExtensions))
+        fail("extensionsRequired", "'" + ext + "' is not supported (this importer reads KHR_lights_punctual, "
+                                   "KHR_texture_transform and KHR_mesh_quantization)");
     std::vector<int> roots;
     if (!model_.scenes.empty()) {
       const size_t s = model_.defaultScene >= 0 ? size_t(model_.defaultScene) : 0;
@@ -147,6 +153,11 @@ class Importer {
   }
 
  private:
+  // The extensions whose content the importer reads (quantized attributes are normalized or integer accessors,
+  // which gltf_accessors reads): a file may require these.
+  static constexpr const char* kReadExtensions[] = {"KHR_lights_punctual", "KHR_texture_transform",
+                                                    "KHR_mesh_quantization"};
+
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {
     throw SceneError(file_, key, message);
   }
@@ -185,6 +196,7 @@ class Importer {
       seen[size_t(item.index)] = true;
       const std::string key = indexed("nodes", size_t(item.index));
       const tinygltf::Node& node = model_.nodes[size_t(item.index)];
+      check_transform_fields(node, key);
       const glm::dmat4 local = node_matrix(node);
       // glTF 2.0 §5.25: a node's matrix is a decomposable affine transform (its last row 0, 0, 0, 1).
       bool finite = true;
@@ -205,6 +217,24 @@ class Importer {
       }
       for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
         stack.push_back({*c, world, key + ".children"});
+    }
+  }
+
+  // glTF 2.0 §5.25: a matrix of 16 numbers, or a translation (3), rotation (a unit quaternion, 4) and scale (3)
+  // (both at once is refused by gltf_json_check: tinygltf drops the second). A shorter array was ignored, and a
+  // zero quaternion made every vertex NaN.
+  void check_transform_fields(const tinygltf::Node& node, const std::string& key) const {
+    const std::pair<const std::vector<double>*, std::pair<const char*, size_t>> fields[] = {
+        {&node.matrix, {"matrix", 16}}, {&node.translation, {"translation", 3}},
+        {&node.rotation, {"rotation", 4}}, {&node.scale, {"scale", 3}}};
+    for (const auto& [v, spec] : fields)
+      if (!v->empty() && v->size() != spec.second)
+        fail(key + "." + spec.first, "needs " + std::to_string(spec.second) + " numbers, not " + std::to_string(v->size()));
+    if (node.rotation.size() == 4) {
+      const double q = std::sqrt(node.rotation[0] * node.rotation[0] + node.rotation[1] * node.rotation[1] +
+                                 node.rotation[2] * node.rotation[2] + node.rotation[3] * node.rotation[3]);
+      if (!(q > 0.0) || !std::isfinite(q)) fail(key + ".rotation", "is not a unit quaternion (its length is " +
+                                                                        std::to_string(q) + ")");
     }
   }
 
@@ -301,8 +331,14 @@ class Importer {
     Material m;
     m.name = src.name.empty() ? key : src.name;
     const auto& pbr = src.pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() == 4) m.base_color = glm::vec4(glm::make_vec4(pbr.baseColorFactor.data()));
-    const float roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
+    // glTF's factors lie in [0, 1]; outside it a colour no surface has (the JSON reader refuses it too).
+    const auto unit = [](double v) { return v >= 0.0 && v <= 1.0; };
+    if (pbr.baseColorFactor.size() != 4 || !std::all_of(pbr.baseColorFactor.begin(), pbr.baseColorFactor.end(), unit))
+      fail(key + ".pbrMetallicRoughness.baseColorFactor", "needs four components, each in [0, 1]");
+    if (!unit(pbr.roughnessFactor)) fail(key + ".pbrMetallicRoughness.roughnessFactor", "must lie in [0, 1]");
+    if (!unit(pbr.metallicFactor)) fail(key + ".pbrMetallicRoughness.metallicFactor", "must lie in [0, 1]");
+    m.base_color = glm::vec4(glm::make_vec4(pbr.baseColorFactor.data()));
+    const float roughness = float(pbr.roughnessFactor);
     m.specular_strength = 0.3f * (1.0f - roughness);
     m.shininess = roughness > 0.0f ? std::clamp(2.0f / std::pow(roughness, 4.0f) - 2.0f, 1.0f, 512.0f) : 512.0f;
     m.double_sided = src.doubleSided;
@@ -462,8 +498,12 @@ class Importer {
     Camera c;
     c.name = !src.name.empty() ? src.name : node.name;
     c.position = glm::vec3(world * glm::vec4(0, 0, 0, 1));
-    c.target = c.position + glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
-    c.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
+    const glm::vec3 forward(world * glm::vec4(0, 0, -1, 0)), up(world * glm::vec4(0, 1, 0, 0));
+    if (!(glm::length(glm::cross(forward, up)) > 0.0f) || !std::isfinite(glm::length(forward) + glm::length(up)))
+      fail(key, "the node's transform flattens camera " + std::to_string(node.camera) +
+                    ": its view direction and up vector are zero or parallel");
+    c.target = c.position + glm::normalize(forward);
+    c.up = glm::normalize(up);
     if (src.type == "orthographic") {
       const auto& o = src.orthographic;
       if (!(o.xmag != 0.0 && o.ymag != 0.0 && o.zfar > o.znear && o.znear >= 0.0))
@@ -477,6 +517,8 @@ class Importer {
       persp.fovy_deg = float(glm::degrees(p.yfov));
       if (p.aspectRatio > 0.0) persp.aspect = float(p.aspectRatio);
       persp.near = float(p.znear);
+      // zfar 0 (tinygltf's value when absent) is glTF's infinite projection, taken as far = 1000 znear.
+      if (p.zfar != 0.0 && !(p.zfar > p.znear)) fail(where + ".perspective.zfar", "must be greater than znear");
       persp.far = p.zfar > p.znear ? float(p.zfar) : float(1000.0 * p.znear);
       c.projection = persp;
     }
@@ -494,11 +536,23 @@ class Importer {
     else if (src.type == "point") l.type = LightType::point;
     else if (src.type == "spot") l.type = LightType::spot;
     else fail(where, "unknown light type '" + src.type + "'");
-    if (src.color.size() == 3) l.color = glm::vec3(glm::make_vec3(src.color.data()));
+    // The light's own values, as KHR_lights_punctual bounds them (tinygltf reads an absent range as 0).
+    const std::string own = "extensions.KHR_lights_punctual." + indexed("lights", size_t(index));
+    const auto finite_non_negative = [](double v) { return std::isfinite(float(v)) && v >= 0.0; };
+    if (!src.color.empty() &&  // absent: white
+        (src.color.size() != 3 || !std::all_of(src.color.begin(), src.color.end(), finite_non_negative)))
+      fail(own + ".color", "needs three finite components of 0 or more");
+    if (!finite_non_negative(src.intensity))
+      fail(own + ".intensity", "must be a finite number of 0 or more (candela, or lux for a directional light)");
+    if (!finite_non_negative(src.range)) fail(own + ".range", "must be a finite number above 0");
+    if (!src.color.empty()) l.color = glm::vec3(glm::make_vec3(src.color.data()));
     l.intensity = float(src.intensity);
     l.range = float(src.range);
     l.position = glm::vec3(world * glm::vec4(0, 0, 0, 1));
-    l.direction = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+    const glm::vec3 facing(world * glm::vec4(0, 0, -1, 0));
+    if (l.type != LightType::point && !(glm::length(facing) > 0.0f && std::isfinite(glm::length(facing))))
+      fail(key, "the node's transform flattens light " + std::to_string(index) + "'s direction to zero");
+    l.direction = glm::length(facing) > 0.0f ? glm::normalize(facing) : glm::vec3(0, 0, -1);  // a point: unused
     if (l.type == LightType::spot) {  // KHR_lights_punctual: 0 <= inner < outer <= pi/2
       const double inner = src.spot.innerConeAngle, outer = src.spot.outerConeAngle;
       if (!(inner >= 0.0 && inner < outer && outer <= glm::half_pi<double>() + 1e-9))

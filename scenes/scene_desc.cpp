@@ -70,6 +70,9 @@ std::optional<Problem> light_problem(const Light& l) {
   if (!(l.inner_cone_deg >= 0.0f && l.inner_cone_deg <= l.outer_cone_deg && l.outer_cone_deg < 90.0f))
     return Problem{"", "needs 0 <= inner_cone <= outer_cone < 90 degrees"};
   if (!(l.range >= 0.0f)) return Problem{"range", "must not be negative"};
+  for (int i = 0; i < 3; ++i)
+    if (!(std::isfinite(l.color[i]) && l.color[i] >= 0.0f))
+      return Problem{"color", "needs three finite components of 0 or more"};
   if (!(l.intensity >= 0.0f) || !std::isfinite(l.intensity))
     return Problem{"intensity", "must be a finite number of 0 or more (candela, or lux for a directional light)"};
   if (const std::string why = shading::tech::refusal(l.shadow.technique, l.type); !why.empty()) {

@@ -1,6 +1,7 @@
 // Bad input of every kind ends in a SceneError whose what() is exactly `WHERE: what is wrong`, WHERE being the
 // file and, where there is one, the key path inside it: missing files, malformed JSON and glTF (truncated, a GLB
 // header that lies about its length), unknown names, wrong types, unknown keys, non-finite data, empty meshes.
+#include <functional>
 #include <fstream>
 #include <limits>
 
@@ -186,6 +187,96 @@ TEST(SceneErrors, DegenerateGeometryAndImpossibleMaterials) {
   EXPECT_NEAR(glm::length(glm::normalize(lit.lights[0].direction) - glm::normalize(glm::vec3(-1, -1, 0))), 0.0f, 1e-6f);
 }
 
+// Values tinygltf reads without a word but wrongly: a negative, fractional or too large index or byte count (as
+// 0 or as absent), an index past its array, TRS beside a matrix (dropped), short arrays (ignored); and values the
+// glTF specification bounds that the importer used to take (issue 20's probe of hand-edited files). The .gltf
+// and the .glb of the same document give the same message.
+TEST(SceneErrors, GltfValuesTinygltfWouldMisread) {
+  const auto dir = testsupport::temp_dir("scene_errors_gltf_values");
+  const std::string d = dir.generic_string();
+  int n = 0;
+  const auto error = [&](const std::function<void(nlohmann::json&)>& edit, bool lit = false) {
+    testsupport::GltfFixture f;
+    f.node({{"mesh", f.mesh(f.positions(kTriangle), f.indices({0, 1, 2}))}});
+    if (lit) {
+      f.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+      f.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 10}}};
+      f.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 100}}}}};
+      f.node({{"translation", {0, 0, 3}}, {"camera", 0}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    }
+    edit(f.doc);
+    std::string name = "v";
+    name += std::to_string(n++);
+    const auto after = [](std::string message, const std::string& file) {
+      if (message.rfind(file + ": ", 0) != 0) return "unexpected: " + message;
+      message.erase(0, file.size() + 2);
+      return message;
+    };
+    const std::string text = after(error_of([&] { scenes::load_scene(f.write_gltf(dir, name)); }), d + "/" + name + ".gltf");
+    EXPECT_EQ(after(error_of([&] { scenes::load_scene(f.write_glb(dir, name)); }), d + "/" + name + ".glb"), text);
+    return text;
+  };
+  EXPECT_EQ(error([](auto&) {}), "unexpected: ");  // the fixture itself loads (no message at all)
+  EXPECT_EQ(error([](auto&) {}, true), "unexpected: ");
+  EXPECT_EQ(error([](auto& j) { j["bufferViews"][0]["byteOffset"] = -4; }),
+            "bufferViews[0].byteOffset: -4 is not a whole number of 0 or more");
+  EXPECT_EQ(error([](auto& j) { j["accessors"][0]["byteOffset"] = 1.5; }),
+            "accessors[0].byteOffset: 1.5 is not a whole number of 0 or more");
+  EXPECT_EQ(error([](auto& j) { j["meshes"][0]["primitives"][0]["indices"] = -1; }),
+            "meshes[0].primitives[0].indices: -1 is not an index (a whole number from 0 to 2147483647)");
+  EXPECT_EQ(error([](auto& j) { j["scene"] = -1; }), "scene: -1 is not an index (a whole number from 0 to 2147483647)");
+  EXPECT_EQ(error([](auto& j) { j["nodes"][0]["mesh"] = 4294967296.0; }),
+            "nodes[0].mesh: 4294967296.0 is not an index (a whole number from 0 to 2147483647)");
+  EXPECT_EQ(error([](auto& j) { j["nodes"][0]["mesh"] = 3; }),
+            "nodes[0].mesh: index 3 is past the end of meshes (the file has 1 entry)");
+  EXPECT_EQ(error([](auto& j) { j["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9; }),
+            "meshes[0].primitives[0].attributes.POSITION: index 9 is past the end of accessors (the file has 2 "
+            "entries)");
+  EXPECT_EQ(error([](auto& j) { j["meshes"][0]["primitives"][0]["mode"] = -1; }),
+            "meshes[0].primitives[0].mode: -1 is not a primitive mode (0 points .. 6 triangle fan)");
+  EXPECT_EQ(error([](auto& j) { j["bufferViews"][0]["byteStride"] = 1000; }),
+            "bufferViews[0].byteStride: 1000 is not a byte stride glTF allows (a multiple of 4 from 4 to 252)");
+  EXPECT_EQ(error([](auto& j) { j["nodes"][0]["matrix"] = {1, 0, 0, 1}; }), "nodes[0].matrix: needs 16 numbers, not 4");
+  EXPECT_EQ(error([](auto& j) {
+              j["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+              j["nodes"][0]["translation"] = {5, 0, 0};
+            }),
+            "nodes[0].matrix: a node has a matrix or translation, rotation and scale, not both");
+  EXPECT_EQ(error([](auto& j) { j["nodes"][0]["rotation"] = {0, 0, 0, 0}; }),
+            "nodes[0].rotation: is not a unit quaternion (its length is 0.000000)");
+  EXPECT_EQ(error([](auto& j) { j["asset"]["version"] = "1.0"; }), "asset.version: '1.0': this importer reads glTF 2.x");
+  EXPECT_EQ(error([](auto& j) { j["extensionsRequired"] = {"EXT_unknown"}; }),
+            "extensionsRequired: 'EXT_unknown' is not supported (this importer reads KHR_lights_punctual, "
+            "KHR_texture_transform and KHR_mesh_quantization)");
+  EXPECT_EQ(error([](auto& j) {  // 300 levels of arrays in extras: refused before any parser recurses
+              j["extras"] = nlohmann::json::parse(std::string(300, '[') + std::string(300, ']'));
+            }),
+            "the JSON nests deeper than 256 levels");
+  EXPECT_EQ(error([](auto& j) { j["extras"] = {{"mesh", -1}}; }), "unexpected: ");  // extras are the author's own
+  // Lights, cameras and materials as the specification bounds them.
+  EXPECT_EQ(error([](auto& j) { j["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = -5; }, true),
+            "extensions.KHR_lights_punctual.lights[0].intensity: must be a finite number of 0 or more (candela, or "
+            "lux for a directional light)");
+  EXPECT_EQ(error([](auto& j) { j["extensions"]["KHR_lights_punctual"]["lights"][0]["color"] = {1, -1, 1}; }, true),
+            "extensions.KHR_lights_punctual.lights[0].color: needs three finite components of 0 or more");
+  EXPECT_EQ(error([](auto& j) { j["extensions"]["KHR_lights_punctual"]["lights"][0]["range"] = -1; }, true),
+            "extensions.KHR_lights_punctual.lights[0].range: must be a finite number above 0");
+  EXPECT_EQ(error([](auto& j) { j["nodes"][1]["scale"] = {0, 0, 0}; }, true),
+            "nodes[1]: the node's transform flattens camera 0: its view direction and up vector are zero or parallel");
+  EXPECT_EQ(error([](auto& j) { j["cameras"][0]["perspective"]["zfar"] = 0.05; }, true),
+            "cameras[0].perspective.zfar: must be greater than znear");
+  EXPECT_EQ(error([](auto& j) { j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {-1, 2, 0, 1}}}}}};
+                                j["meshes"][0]["primitives"][0]["material"] = 0; }),
+            "materials[0].pbrMetallicRoughness.baseColorFactor: needs four components, each in [0, 1]");
+  EXPECT_EQ(error([](auto& j) { j["materials"] = {{{"pbrMetallicRoughness", {{"roughnessFactor", -3}}}}};
+                                j["meshes"][0]["primitives"][0]["material"] = 0; }),
+            "materials[0].pbrMetallicRoughness.roughnessFactor: must lie in [0, 1]");
+  // A JSON scene's light colour is bounded alike.
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"}}],
+                           "lights": [{"type": "directional", "color": [-1, 1, 1]}]})"),
+            "scene.json: lights[0].color: needs three finite components of 0 or more");
+}
+
 TEST(SceneErrors, GltfOutsideTheSpecification) {
   const auto dir = testsupport::temp_dir("scene_errors_gltf_spec");
   const std::string d = dir.generic_string();
@@ -332,7 +423,8 @@ TEST(SceneErrors, BrokenGltf) {
     f.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
     f.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "draco")); }),
-              d + "/draco.gltf: extensionsRequired: 'KHR_draco_mesh_compression' is not supported");
+              d + "/draco.gltf: extensionsRequired: 'KHR_draco_mesh_compression' is not supported (this importer "
+                  "reads KHR_lights_punctual, KHR_texture_transform and KHR_mesh_quantization)");
   }
   testsupport::GltfFixture f;
   f.node({{"mesh", f.mesh(f.positions(kTriangle))}});

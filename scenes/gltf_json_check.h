@@ -1,0 +1,28 @@
+// The glTF JSON's indices and byte counts, checked before tinygltf reads the file: tinygltf takes a negative or
+// fractional one as absent or as 0 (a bufferView's byteOffset of -4 read as 0, a primitive's "indices": -1 as
+// an unindexed primitive, "scene": -1 as no default scene), so such a file drew something without a word.
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace scenes {
+
+struct GltfJsonProblem {
+  std::string key;      // where, as the importer names it: "bufferViews[1].byteOffset"
+  std::string message;  // what is wrong with it
+};
+
+// The first index or byte count of a .gltf document (binary false) or of a GLB's JSON chunk that is not a whole
+// number of 0 or more (indices at most 2^31 - 1, the loader's int), an index past the end of the array it names
+// (a mesh, node, accessor, buffer view, buffer, camera, material, skin, image, scene or KHR light), a byteStride
+// outside glTF's 4..252 in steps of 4, or a primitive mode outside 0..6. Checked:
+// every glTF 2.0 property that holds an index (buffer, bufferView, camera, children, indices, index,
+// inverseBindMatrices, joints, light, material, mesh, node, nodes, input, output, sampler, scene, skeleton, skin,
+// source, the values of attributes and of morph targets), a byte count (byteOffset, byteLength, byteStride,
+// count) or texCoord, through the core objects and KHR_ / EXT_ extensions; "extras" and other vendors'
+// extensions are their authors' own. A document nested deeper than 256 levels is refused before it is parsed
+// (tinygltf's recursion overflowed the stack). A document that does not parse is left to tinygltf to report.
+std::optional<GltfJsonProblem> gltf_json_problem(const unsigned char* bytes, size_t length, bool binary);
+
+}  // namespace scenes
