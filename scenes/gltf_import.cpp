@@ -48,6 +48,8 @@ std::string clean_message(std::string s) {
     if (c == '\n') c = ' ';
   if (const size_t end = s.find("] "); s.rfind("[json.exception.", 0) == 0 && end != std::string::npos)
     s = s.substr(end + 2);
+  // tinygltf quotes a bad data: URI whole (a 240 KB line for a broken buffer): the start says enough.
+  if (constexpr size_t kMax = 240; s.size() > kMax) s = s.substr(0, kMax) + "... (" + std::to_string(s.size()) + " characters)";
   return s;
 }
 

@@ -11,7 +11,12 @@ namespace {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-bool usable_normal(const glm::vec3& n) { return finite(n) && glm::dot(n, n) > 1e-12f; }
+// Finite, not near zero, and normalizable in float: a squared length that overflows made glm::normalize
+// return (0, 0, 0) (n times 1 / sqrt(inf)), which lit the model black.
+bool usable_normal(const glm::vec3& n) {
+  const float d = glm::dot(n, n);
+  return finite(n) && std::isfinite(d) && d > 1e-12f;
+}
 
 void push_unless_degenerate(std::vector<uint32_t>& out, uint32_t a, uint32_t b, uint32_t c) {
   if (a == b || b == c || a == c) return;
@@ -31,7 +36,32 @@ std::vector<glm::vec3> compute_normals(std::span<const glm::vec3> positions, std
     sum[b] += n;
     sum[c] += n;
   }
-  for (glm::vec3& n : sum) n = usable_normal(n) ? glm::normalize(n) : glm::vec3(0.0f, 1.0f, 0.0f);
+  // A model beyond about 1e9 m overflows the float sums' squares, and one below about 1e-6 m falls under
+  // usable_normal's floor: those vertices are summed again in double (area weights up to 1e76, down to 1e-300),
+  // so that a model lit at 1 m is lit alike at 1e10 m or 1e-10 m. Elsewhere the float sums stand as they were.
+  bool all_usable = true;
+  for (const glm::vec3& n : sum) all_usable = all_usable && usable_normal(n);
+  std::vector<glm::dvec3> wide;
+  if (!all_usable) {
+    wide.assign(positions.size(), glm::dvec3(0.0));
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+      const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+      if (a >= positions.size() || b >= positions.size() || c >= positions.size()) continue;
+      const glm::dvec3 pa(positions[a]);
+      const glm::dvec3 n = glm::cross(glm::dvec3(positions[b]) - pa, glm::dvec3(positions[c]) - pa);
+      wide[a] += n, wide[b] += n, wide[c] += n;
+    }
+  }
+  for (size_t i = 0; i < sum.size(); ++i) {
+    glm::vec3& n = sum[i];
+    if (usable_normal(n)) {
+      n = glm::normalize(n);
+    } else if (const double len = glm::length(wide[i]); len > 0.0 && std::isfinite(len)) {
+      n = glm::vec3(wide[i] / len);
+    } else {
+      n = glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+  }
   return sum;
 }
 

@@ -64,6 +64,7 @@ class Builder {
     if (out_.instances.empty()) fail("objects", "the scene has no triangles");
     if (!any_triangle_with_area())
       fail("objects", "every triangle of the scene has zero area: nothing would be drawn or cast a shadow");
+    check_float_steps();
     flip_mirrored();
     finish_cameras();
     finish_lights();
@@ -72,7 +73,28 @@ class Builder {
 
  private:
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {
-    throw SceneError(ctx_.file, key, message);
+    throw SceneError(ctx_.file, ctx_.wraps_model && key.rfind("objects", 0) == 0 ? std::string() : key, message);
+  }
+
+  // Vertices are 32-bit floats, which step by 2^-23 of their magnitude: a scene far from the origin for its size
+  // (a 1 m model at 1e30 m, whose steps are 1.2e23 m) collapses, and its camera, a few sizes away, cannot be told
+  // from its target, so the frame came out empty with no word. Refused where a step exceeds 1/64 of the scene's
+  // size (a 1 m model at 500 km; 6 cm steps on it); a 10 km terrain still fits 100,000 km out.
+  void check_float_steps() const {
+    const Aabb b = scene_bounds(out_);
+    if (b.empty()) return;
+    const glm::dvec3 lo(b.min), hi(b.max);
+    const double reach = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
+                                   std::abs(hi.z)});
+    const double size = glm::length(hi - lo), step = reach * 0x1p-23;
+    if (step > size / 64.0) {
+      char line[320];
+      std::snprintf(line, sizeof line,
+                    "the scene lies %.3g m from the origin, where 32-bit floats step by %.3g m, too coarse for its "
+                    "size of %.3g m: move it nearer the origin",
+                    reach, step, size);
+      fail("objects", line);
+    }
   }
 
   std::filesystem::path resolve(const std::string& path) const {
@@ -118,7 +140,8 @@ class Builder {
     for (int k = 0; k < 8; ++k) {
       const glm::vec4 corner = world * glm::vec4(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z, 1.0f);
       if (!std::isfinite(corner.x) || !std::isfinite(corner.y) || !std::isfinite(corner.z))
-        fail(key + ".transform", "takes the object's vertices beyond the range of 32-bit floats");
+        fail(key + ".transform", ctx_.wraps_model ? "the model's vertices, placed, lie beyond the range of 32-bit floats"
+                                                   : "takes the object's vertices beyond the range of 32-bit floats");
     }
   }
 
@@ -331,8 +354,9 @@ bool is_gltf(const std::filesystem::path& path) {
 Scene build_scene(const SceneDesc& desc, const BuildContext& context) { return Builder(desc, context).run(); }
 
 Scene load_scene(const std::filesystem::path& path) {
-  const BuildContext context{path.parent_path(), path.string()};
+  BuildContext context{path.parent_path(), path.string()};
   if (!is_gltf(path)) return build_scene(load_scene_desc(path), context);
+  context.wraps_model = true;
   if (auto problem = unreadable(path)) throw SceneError(path.string(), "", "cannot open file (" + *problem + ")");
   SceneDesc desc;
   desc.name = path.stem().string();

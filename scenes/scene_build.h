@@ -17,6 +17,9 @@ struct BuildContext {
   std::string file;
   bool default_camera = true;  // add frame_camera() when the scene has no camera (below)
   bool default_light = true;   // add the default sun when the scene has no light (below)
+  // The document only wraps one glTF file (load_scene, the stage): its "objects…" keys are not in any file the
+  // user wrote, so errors name the file alone.
+  bool wraps_model = false;
 };
 
 // Builds a scene. Beyond what the document says:

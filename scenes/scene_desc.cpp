@@ -47,9 +47,10 @@ glm::mat4 transform_matrix(const TransformDesc& t) {
 }
 
 std::optional<Problem> camera_problem(const Camera& c) {
-  const glm::vec3 forward = c.target - c.position;
-  if (!(glm::dot(forward, forward) > 0.0f)) return Problem{"target", "same as position"};
-  if (!(glm::length(glm::cross(glm::normalize(forward), c.up)) > 1e-6f))
+  // In double: a camera 1e20 m from its target is fine, but float's squares of that distance overflow.
+  const glm::dvec3 forward = glm::dvec3(c.target) - glm::dvec3(c.position);
+  if (!(glm::dot(forward, forward) > 0.0)) return Problem{"target", "same as position"};
+  if (!(glm::length(glm::cross(glm::normalize(forward), glm::dvec3(c.up))) > 1e-6))
     return Problem{"up", "zero or parallel to the view direction"};
   if (const auto* p = std::get_if<Perspective>(&c.projection)) {
     if (!(p->fovy_deg > 0.0f && p->fovy_deg < 180.0f))

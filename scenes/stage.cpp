@@ -4,6 +4,7 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <variant>
 
 #include <glm/geometric.hpp>
@@ -32,6 +33,7 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
   if (options.z_up) model.transform.rotate_deg = glm::vec3(-90.0f, 0.0f, 0.0f);
   desc.objects.push_back(model);
   BuildContext context{path.parent_path(), path.string()};
+  context.wraps_model = true;
   if (options.sun) {
     const glm::vec2 s = *options.sun;
     if (!std::isfinite(s.x) || !std::isfinite(s.y) || s.y <= 0.0f || s.y > 90.0f)
@@ -67,7 +69,10 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
     out.notes.push_back(line);
     if (options.ground && !bounds.empty()) {
       const glm::vec3 size = bounds.size(), centre = bounds.center();
-      const float side = std::max(3.0f * std::max(size.x, size.z), 1e-3f);
+      // Three times the model's footprint, at any scale (a floor of 1 mm made a 1e-6 m model a speck on a
+      // plane that the camera then framed); a model with no footprint (all in one vertical line) has its height.
+      float side = 3.0f * std::max(size.x, size.z);
+      if (!(side > 0.0f)) side = 3.0f * size.y;
       ObjectDesc ground;
       ground.name = "ground";
       ground.source = Shape{PlaneShape{glm::vec2(side), 1}};
@@ -90,8 +95,9 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
     Camera c = frame_camera(bounds, "framed");
     // Far enough for the ground around the model (up to about 2.2 model sizes from its centre).
     if (auto* p = std::get_if<Perspective>(&c.projection)) {
-      const float radius = 0.5f * glm::length(bounds.size());
-      p->far = glm::length(c.position - c.target) + 5.0f * std::max(radius, 1e-3f);
+      const double radius = std::max(0.5 * glm::length(glm::dvec3(bounds.size())), 1e-12);  // as frame_camera
+      p->far = float(std::min(double(glm::length(glm::dvec3(c.position - c.target))) + 5.0 * radius,
+                              double(std::numeric_limits<float>::max())));
     }
     desc.cameras.push_back(c);
     if (!options.camera_chosen)

@@ -1,6 +1,7 @@
 // Mesh repairs and conversions: area-weighted normals, normal repair, winding flips, strips and fans, checks.
 #include <limits>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "scenes/mesh_ops.h"
@@ -17,6 +18,29 @@ TEST(MeshOps, NormalsAreAreaWeighted) {
   EXPECT_NEAR(glm::distance(n[0], expected), 0.0f, 1e-6f);
   EXPECT_EQ(n[1], glm::vec3(0, 0, 1));
   EXPECT_EQ(n[3], glm::vec3(1, 0, 0));
+}
+
+// The same normals at any scale a float holds: at 1e10 the float sums' squares overflowed (normalize gave 0, the
+// model lit black) and below 1e-6 they fell under the usable floor (every normal became +Y).
+TEST(MeshOps, NormalsAtEveryScale) {
+  const std::vector<glm::vec3> unit = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, -1}, {0, 1, 0}};
+  const std::vector<uint32_t> idx = {0, 1, 2, 0, 3, 4};
+  const auto expected = scenes::compute_normals(unit, idx);
+  for (const float scale : {1e-30f, 1e-10f, 1e-6f, 1e10f, 1e18f, 1e30f}) {
+    std::vector<glm::vec3> p = unit;
+    for (glm::vec3& v : p) v *= scale;
+    const auto n = scenes::compute_normals(p, idx);
+    for (size_t i = 0; i < n.size(); ++i)
+      EXPECT_NEAR(glm::distance(n[i], expected[i]), 0.0f, 1e-6f) << "scale " << scale << ", vertex " << i;
+  }
+  // A given normal too long to normalize in float is replaced, not normalized to zero.
+  scenes::Mesh m;
+  m.positions = unit;
+  m.indices = idx;
+  m.normals = std::vector<glm::vec3>(unit.size(), glm::vec3(0, 0, 1));
+  m.normals[1] = glm::vec3(1e30f, 0, 0);
+  EXPECT_EQ(scenes::repair_normals(m), 1u);
+  EXPECT_EQ(m.normals[1], glm::vec3(0, 0, 1));
 }
 
 TEST(MeshOps, UnusedVertexGetsUp) {

@@ -178,6 +178,13 @@ TEST(SceneErrors, DegenerateGeometryAndImpossibleMaterials) {
                                   "light (", 0), 0u) << far.warnings[0];
   EXPECT_FLOAT_EQ(far.lights[0].range, 3e38f);
   EXPECT_TRUE(point_light("30").warnings.empty());
+  // A scene so far from the origin that float steps dwarf it: refused (it drew an empty frame); a 10 km terrain
+  // 100,000 km out is fine.
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"}, "transform": {"translate": [1e30, 0, 0]}}]})"),
+            "scene.json: objects: the scene lies 1e+30 m from the origin, where 32-bit floats step by 1.19e+23 m, "
+            "too coarse for its size of 1.41 m: move it nearer the origin");  // its x side collapsed
+  EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"},
+                           "transform": {"translate": [1e8, 0, 0], "scale": [1e4, 10, 1e4]}}]})"), "");
   // A light direction so long that its squared length overflows still points somewhere.
   const scenes::Scene lit = scenes::build_scene(
       scenes::parse_scene_json(R"({"objects": [{"primitive": {"type": "box"}}],
@@ -425,6 +432,19 @@ TEST(SceneErrors, BrokenGltf) {
     EXPECT_EQ(error_of([&] { scenes::load_scene(f.write_gltf(dir, "draco")); }),
               d + "/draco.gltf: extensionsRequired: 'KHR_draco_mesh_compression' is not supported (this importer "
                   "reads KHR_lights_punctual, KHR_texture_transform and KHR_mesh_quantization)");
+  }
+  {
+    // A broken base64 buffer: tinygltf quotes the whole URI (a 240 KB line for a real file); its start is enough.
+    testsupport::GltfFixture f;
+    f.node({{"mesh", f.mesh(f.positions(kTriangle))}});
+    nlohmann::json doc = f.doc;
+    doc["buffers"] = {{{"uri", "data:application/octet-stream;base64," + std::string(20000, 'A') + "!!"},
+                       {"byteLength", 36}}};
+    std::ofstream(dir / "datauri.gltf") << doc.dump();
+    const std::string message = error_of([&] { scenes::load_scene(dir / "datauri.gltf"); });
+    EXPECT_EQ(message.rfind(d + "/datauri.gltf: malformed glTF: ", 0), 0u) << message.substr(0, 300);
+    EXPECT_LT(message.size(), d.size() + 400u);
+    EXPECT_NE(message.find("characters)"), std::string::npos) << message.substr(0, 300);
   }
   testsupport::GltfFixture f;
   f.node({{"mesh", f.mesh(f.positions(kTriangle))}});

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "scenes/camera_math.h"
 #include "scenes/scene_error.h"
 #include "scenes/scene_queries.h"
 #include "scenes/stage.h"
@@ -17,10 +18,12 @@
 namespace {
 
 // A closed box from (0, 0, 0) to (1, 2, 4), twelve triangles; with a point light when `light`.
-std::filesystem::path write_box(const std::filesystem::path& dir, const std::string& name, bool light) {
+std::filesystem::path write_box(const std::filesystem::path& dir, const std::string& name, bool light,
+                                float scale = 1.0f) {
   testsupport::GltfFixture f;
   std::vector<glm::vec3> p;
-  for (int i = 0; i < 8; ++i) p.emplace_back(float(i & 1), 2.0f * float((i >> 1) & 1), 4.0f * float(i >> 2));
+  for (int i = 0; i < 8; ++i)
+    p.push_back(scale * glm::vec3(float(i & 1), 2.0f * float((i >> 1) & 1), 4.0f * float(i >> 2)));
   const std::vector<uint32_t> idx = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
                                      2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
   f.node({{"mesh", f.mesh(f.positions(p), f.indices(idx))}});
@@ -66,6 +69,29 @@ TEST(Stage, BareModelGetsASunAGroundAndACamera) {
   o.ground = false;
   const scenes::StagedScene bare = scenes::load_model_staged(write_box(dir, "box2", false), o);
   EXPECT_NEAR(scenes::scene_bounds(bare.scene).max.x - scenes::scene_bounds(bare.scene).min.x, 1.0f, 1e-5f);
+}
+
+// A model of any size a float holds is staged alike, its ground and camera scaled with it: a 1 mm floor on the
+// ground and the camera's radius made a 1e-6 m model a speck, and at 1e20 m the camera's radius, view vector and
+// near · far overflowed (an error about a camera the file does not have, or an empty frame).
+TEST(Stage, ModelsOfAnySizeAreFramedAlike) {
+  const auto dir = testsupport::temp_dir("stage_scales");
+  scenes::StageOptions o;
+  o.sun = glm::vec2(90.0f, 30.0f);
+  const glm::vec3 centre_unit(0.5f, 1.0f, 2.0f);
+  for (const float scale : {1e-10f, 1e-6f, 1.0f, 1e20f, 1e35f}) {
+    const scenes::StagedScene s = scenes::load_model_staged(write_box(dir, "box", false, scale), o);
+    const scenes::Aabb all = scenes::scene_bounds(s.scene);
+    EXPECT_NEAR((all.max.x - all.min.x) / scale, 12.0f, 1e-3f) << scale;  // the ground: 3 × 4 m, scaled
+    ASSERT_EQ(s.scene.cameras.size(), 1u);
+    const glm::mat4 vp = scenes::projection_matrix(s.scene.cameras[0], 16.0f / 9.0f) * scenes::view_matrix(s.scene.cameras[0]);
+    const glm::vec4 clip = vp * glm::vec4(scale * centre_unit, 1.0f);
+    ASSERT_TRUE(std::isfinite(clip.x) && std::isfinite(clip.y) && std::isfinite(clip.w) && clip.w > 0.0f) << scale;
+    EXPECT_NEAR(clip.x / clip.w, 0.0f, 1e-3f) << scale;  // the model's centre at the frame's centre
+    EXPECT_NEAR(clip.y / clip.w, 0.0f, 1e-3f) << scale;
+    EXPECT_GT(clip.z / clip.w, -1.0f);
+    EXPECT_LT(clip.z / clip.w, 1.0f);
+  }
 }
 
 // --up z: the model's +Z becomes +Y (its 4 m side stands up) and the ground goes under the turned model.
