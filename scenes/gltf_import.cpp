@@ -299,6 +299,9 @@ class Importer {
       for (glm::vec2& c : mesh.texcoords) c.y = 1.0f - c.y;
     } else if (uv != "TEXCOORD_0") {
       fail(attr + uv, "missing: the material's base-colour texture reads it");
+    } else if (has_base_texture(prim.material)) {  // exporters write these; drawn, but said
+      out_.warnings.push_back(file_ + ": " + attr + uv + ": missing, though the material's base-colour texture "
+                              "reads it: the texel at (0, 0) colours the whole primitive");
     }
     std::vector<uint32_t> indices;
     if (prim.indices >= 0) {
@@ -369,6 +372,11 @@ class Importer {
     out_.materials.push_back(m);
     materials_[size_t(index)] = int(out_.materials.size() - 1);
     return uint32_t(materials_[size_t(index)]);
+  }
+
+  bool has_base_texture(int material) const {
+    return material >= 0 && size_t(material) < model_.materials.size() &&
+           model_.materials[size_t(material)].pbrMetallicRoughness.baseColorTexture.index >= 0;
   }
 
   // The TEXCOORD_n a primitive's material reads its base-colour texture through (KHR_texture_transform's

@@ -169,6 +169,16 @@ std::optional<GltfJsonProblem> gltf_json_problem(const unsigned char* bytes, siz
   Walk w(doc);
   w.value(doc, "");
   if (w.problem) return w.problem;
+  // glTF 3.6.2.3: "normalized" is for 8- and 16-bit integer components only (read as a float or a 32-bit
+  // integer, the flag would be ignored).
+  if (doc.contains("accessors") && doc["accessors"].is_array())
+    for (size_t i = 0; i < doc["accessors"].size(); ++i) {
+      const json& a = doc["accessors"][i];
+      if (a.is_object() && a.contains("normalized") && a["normalized"] == true && a.contains("componentType") &&
+          a["componentType"].is_number() && (a["componentType"] == 5125 || a["componentType"] == 5126))
+        return GltfJsonProblem{"accessors[" + std::to_string(i) + "].normalized",
+                               "only 8- and 16-bit integer components can be normalized"};
+    }
   // A node with a matrix and a translation, rotation or scale: tinygltf keeps the matrix and drops the rest.
   if (doc.contains("nodes") && doc["nodes"].is_array())
     for (size_t i = 0; i < doc["nodes"].size(); ++i) {

@@ -244,6 +244,8 @@ TEST(SceneErrors, GltfValuesTinygltfWouldMisread) {
   EXPECT_EQ(error([](auto& j) { j["bufferViews"][0]["byteStride"] = 1000; }),
             "bufferViews[0].byteStride: 1000 is not a byte stride glTF allows (a multiple of 4 from 4 to 252)");
   EXPECT_EQ(error([](auto& j) { j["nodes"][0]["matrix"] = {1, 0, 0, 1}; }), "nodes[0].matrix: needs 16 numbers, not 4");
+  EXPECT_EQ(error([](auto& j) { j["accessors"][0]["normalized"] = true; }),
+            "accessors[0].normalized: only 8- and 16-bit integer components can be normalized");
   EXPECT_EQ(error([](auto& j) {
               j["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
               j["nodes"][0]["translation"] = {5, 0, 0};
@@ -278,6 +280,19 @@ TEST(SceneErrors, GltfValuesTinygltfWouldMisread) {
   EXPECT_EQ(error([](auto& j) { j["materials"] = {{{"pbrMetallicRoughness", {{"roughnessFactor", -3}}}}};
                                 j["meshes"][0]["primitives"][0]["material"] = 0; }),
             "materials[0].pbrMetallicRoughness.roughnessFactor: must lie in [0, 1]");
+  {  // a texture read through TEXCOORD_0, which the primitive lacks: drawn (exporters write these), but said
+    testsupport::GltfFixture f;
+    f.node({{"mesh", f.mesh(f.positions(kTriangle), f.indices({0, 1, 2}))}});
+    f.doc["images"] = {{{"uri", "missing.png"}}};
+    f.doc["textures"] = {{{"source", 0}}};
+    f.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    f.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    const scenes::Scene s = scenes::import_gltf(f.write_gltf(dir, "no_uv"));
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_EQ(s.warnings[0], d + "/no_uv.gltf: meshes[0].primitives[0].attributes.TEXCOORD_0: missing, though the "
+                                 "material's base-colour texture reads it: the texel at (0, 0) colours the whole "
+                                 "primitive");
+  }
   // A JSON scene's light colour is bounded alike.
   EXPECT_EQ(json_error(R"({"objects": [{"primitive": {"type": "box"}}],
                            "lights": [{"type": "directional", "color": [-1, 1, 1]}]})"),

@@ -182,6 +182,8 @@ testsupport::GltfFixture embedded_leaf(nlohmann::json image) {
   testsupport::GltfFixture g;
   const int pos = g.positions({{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}});
   g.mesh(pos, g.indices({0, 2, 1, 0, 3, 2}));
+  const std::vector<glm::vec2> uv = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // the file's own, unused by leaf_scene_with
+  g.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = g.accessor(uv.data(), sizeof(glm::vec2) * 4, 5126, 4, "VEC2");
   g.doc["meshes"][0]["primitives"][0]["material"] = 0;
   g.doc["materials"] = {{{"name", "leaf"},
                          {"alphaMode", "MASK"},
