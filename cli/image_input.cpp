@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include <OpenImageIO/imagebufalgo.h>
@@ -85,6 +86,18 @@ OIIO::ImageBuf read_image(const std::string& file, int* file_bits) {
   }
   bool converted = true;
   if (already_float) {
+  } else if (spec.channelformats.empty() && (spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16)) {
+    // Integer samples as one correctly rounded division each, code / (2^bits − 1): so a byte x and the 16-bit
+    // 257 x that stores the same value read as the same float (OpenImageIO's conversion left them an ulp apart,
+    // and diff failed an 8-bit frame against its 16-bit copy).
+    if (spec.format == OIIO::TypeDesc::UINT8)
+      for (size_t i = 0; i < values; ++i) pixels[i] = float(std::to_integer<uint8_t>(raw[i])) / 255.0f;
+    else
+      for (size_t i = 0; i < values; ++i) {
+        uint16_t v;
+        std::memcpy(&v, raw.data() + 2 * i, 2);
+        pixels[i] = float(v) / 65535.0f;
+      }
   } else if (spec.channelformats.empty()) {
     converted = OIIO::convert_pixel_values(spec.format, raw.data(), OIIO::TypeDesc::FLOAT, pixels, int(values));
   } else {

@@ -146,6 +146,16 @@ TEST_F(CliScripting, DiffReportsMetricsAndHonoursFailOver) {
   EXPECT_LT(cold[0] + cold[1] + cold[2], 0.1f);
   testsupport::expect_bad_run(dir, "diff a.png b.png --fail-over 5x", "--fail-over");
   testsupport::expect_bad_run(dir, "diff a.png b.png --fail-over 101%", "--fail-over");
+  // The same picture stored in 16 bits (each byte x as 257 x) is identical to its 8-bit self, not an ulp away
+  // from it in most pixels.
+  OIIO::ImageBuf wide((dir / "a.png").string());
+  ASSERT_TRUE(wide.read(0, 0, true, OIIO::TypeDesc::UINT8));
+  wide.set_write_format(OIIO::TypeDesc::UINT16);
+  ASSERT_TRUE(wide.write((dir / "a16.png").string()));
+  r = shadowlab(dir, "diff a.png a16.png");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("over tolerance 0: 0 of 2304 pixels"));
+  EXPECT_THAT(shadowlab(dir, "inspect a16.png").out, ::testing::HasSubstr("16 bits per channel"));
 }
 
 TEST_F(CliScripting, InspectReadsOtherRenderersExrs) {
