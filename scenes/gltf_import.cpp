@@ -522,7 +522,8 @@ class Importer {
                                   float(o.ymag),  float(o.znear), float(o.zfar)};
     } else {
       const auto& p = src.perspective;
-      if (!(p.yfov > 0.0 && p.znear > 0.0)) fail(where + ".perspective", "needs a positive yfov and znear");
+      if (!(p.yfov > 0.0 && p.yfov < glm::pi<double>() && p.znear > 0.0))
+        fail(where + ".perspective", "needs 0 < yfov < pi and a positive znear");
       Perspective persp;
       persp.fovy_deg = float(glm::degrees(p.yfov));
       if (p.aspectRatio > 0.0) persp.aspect = float(p.aspectRatio);

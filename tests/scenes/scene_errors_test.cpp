@@ -272,6 +272,8 @@ TEST(SceneErrors, GltfValuesTinygltfWouldMisread) {
             "extensions.KHR_lights_punctual.lights[0].range: must be a finite number above 0");
   EXPECT_EQ(error([](auto& j) { j["nodes"][1]["scale"] = {0, 0, 0}; }, true),
             "nodes[1]: the node's transform flattens camera 0: its view direction and up vector are zero or parallel");
+  EXPECT_EQ(error([](auto& j) { j["cameras"][0]["perspective"]["yfov"] = 3.1415927; }, true),  // drew an empty frame
+            "cameras[0].perspective: needs 0 < yfov < pi and a positive znear");
   EXPECT_EQ(error([](auto& j) { j["cameras"][0]["perspective"]["zfar"] = 0.05; }, true),
             "cameras[0].perspective.zfar: must be greater than znear");
   EXPECT_EQ(error([](auto& j) { j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {-1, 2, 0, 1}}}}}};
