@@ -73,7 +73,9 @@ class Walk {
         if (key == "extras") continue;
         if (key == "extensions" && child.is_object()) {
           for (const auto& [name, ext] : child.items())
-            if (name.rfind("KHR_", 0) == 0 || name.rfind("EXT_", 0) == 0) value(ext, here + "." + name);
+            // Draco's "attributes" hold ids inside its compressed stream, not accessors: its own reader's matter.
+            if ((name.rfind("KHR_", 0) == 0 || name.rfind("EXT_", 0) == 0) && name != "KHR_draco_mesh_compression")
+              value(ext, here + "." + name);
           continue;
         }
         if (key == "attributes" && child.is_object()) {

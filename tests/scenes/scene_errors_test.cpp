@@ -262,6 +262,12 @@ TEST(SceneErrors, GltfValuesTinygltfWouldMisread) {
             }),
             "the JSON nests deeper than 256 levels");
   EXPECT_EQ(error([](auto& j) { j["extras"] = {{"mesh", -1}}; }), "unexpected: ");  // extras are the author's own
+  EXPECT_EQ(error([](auto& j) {  // Draco's attribute ids (used, not required: the accessors stand) are not accessors
+              j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+              j["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"] = {
+                  {"bufferView", 0}, {"attributes", {{"POSITION", 7}}}};
+            }),
+            "unexpected: ");
   // Lights, cameras and materials as the specification bounds them.
   EXPECT_EQ(error([](auto& j) { j["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = -5; }, true),
             "extensions.KHR_lights_punctual.lights[0].intensity: must be a finite number of 0 or more (candela, or "
