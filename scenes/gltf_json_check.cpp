@@ -73,8 +73,10 @@ class Walk {
         if (key == "extras") continue;
         if (key == "extensions" && child.is_object()) {
           for (const auto& [name, ext] : child.items())
-            // Draco's "attributes" hold ids inside its compressed stream, not accessors: its own reader's matter.
-            if ((name.rfind("KHR_", 0) == 0 || name.rfind("EXT_", 0) == 0) && name != "KHR_draco_mesh_compression")
+            // The compression extensions are their decoders' matter: Draco's "attributes" are ids in its own
+            // stream, not accessors, and meshopt's byteStride may be 2.
+            if ((name.rfind("KHR_", 0) == 0 || name.rfind("EXT_", 0) == 0) && name != "KHR_draco_mesh_compression" &&
+                name != "EXT_meshopt_compression")
               value(ext, here + "." + name);
           continue;
         }

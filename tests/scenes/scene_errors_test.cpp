@@ -268,6 +268,12 @@ TEST(SceneErrors, GltfValuesTinygltfWouldMisread) {
                   {"bufferView", 0}, {"attributes", {{"POSITION", 7}}}};
             }),
             "unexpected: ");
+  EXPECT_EQ(error([](auto& j) {  // meshopt's index streams have a byteStride of 2
+              j["extensionsUsed"] = {"EXT_meshopt_compression"};
+              j["bufferViews"][0]["extensions"]["EXT_meshopt_compression"] = {
+                  {"buffer", 0}, {"byteLength", 4}, {"byteStride", 2}, {"count", 2}, {"mode", "INDICES"}};
+            }),
+            "unexpected: ");
   // Lights, cameras and materials as the specification bounds them.
   EXPECT_EQ(error([](auto& j) { j["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = -5; }, true),
             "extensions.KHR_lights_punctual.lights[0].intensity: must be a finite number of 0 or more (candela, or "
