@@ -72,12 +72,11 @@ class Walk {
         const std::string here = at.empty() ? key : at + "." + key;
         if (key == "extras") continue;
         if (key == "extensions" && child.is_object()) {
+          // Only the extensions the importer reads: the others give these keys their own meanings (Draco's
+          // "attributes" are ids in its stream, meshopt's byteStride may be 2, KHR_interactivity's "node" is a
+          // graph node, EXT_lights_image_based's "light" is not a KHR light, KHR_xmp_json_ld holds free JSON-LD).
           for (const auto& [name, ext] : child.items())
-            // The compression extensions are their decoders' matter: Draco's "attributes" are ids in its own
-            // stream, not accessors, and meshopt's byteStride may be 2.
-            if ((name.rfind("KHR_", 0) == 0 || name.rfind("EXT_", 0) == 0) && name != "KHR_draco_mesh_compression" &&
-                name != "EXT_meshopt_compression")
-              value(ext, here + "." + name);
+            if (name == "KHR_lights_punctual" || name == "KHR_texture_transform") value(ext, here + "." + name);
           continue;
         }
         if (key == "attributes" && child.is_object()) {

@@ -20,8 +20,11 @@ struct GltfJsonProblem {
 // every glTF 2.0 property that holds an index (buffer, bufferView, camera, children, indices, index,
 // inverseBindMatrices, joints, light, material, mesh, node, nodes, input, output, sampler, scene, skeleton, skin,
 // source, the values of attributes and of morph targets), a byte count (byteOffset, byteLength, byteStride,
-// count) or texCoord, through the core objects and KHR_ / EXT_ extensions (but the compression extensions, Draco
-// and meshopt, whose fields follow their own rules); "extras" and other vendors' extensions are their authors' own. A document nested deeper than 256 levels is refused before it is parsed
+// count) or texCoord, through the core objects and the two extensions the importer reads (KHR_lights_punctual,
+// KHR_texture_transform); "extras" and every other extension are left alone, since their fields follow their own
+// rules (Draco's attribute ids, meshopt's byteStride of 2, KHR_interactivity's graph nodes, EXT_lights_image_based's
+// lights, KHR_xmp_json_ld's free JSON-LD) and tinygltf keeps them as opaque values. A document nested deeper than
+// 256 levels is refused before it is parsed
 // (tinygltf's recursion overflowed the stack). A document that does not parse is left to tinygltf to report.
 std::optional<GltfJsonProblem> gltf_json_problem(const unsigned char* bytes, size_t length, bool binary);
 

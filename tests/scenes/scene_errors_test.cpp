@@ -274,6 +274,24 @@ TEST(SceneErrors, GltfValuesTinygltfWouldMisread) {
                   {"buffer", 0}, {"byteLength", 4}, {"byteStride", 2}, {"count", 2}, {"mode", "INDICES"}};
             }),
             "unexpected: ");
+  EXPECT_EQ(error([](auto& j) {  // other extensions give these keys their own meanings; none is checked as core
+              j["extensionsUsed"] = {"KHR_interactivity", "EXT_lights_image_based", "KHR_xmp_json_ld"};
+              j["extensions"]["KHR_interactivity"] = {
+                  {"graphs", {{{"nodes", {{{"declaration", 0}, {"flows", {{"out", {{"node", 5}, {"socket", "in"}}}}}}}}}}}};
+              j["extensions"]["EXT_lights_image_based"] = {{"lights", {{{"intensity", 1}}}}};
+              j["scenes"][0]["extensions"]["EXT_lights_image_based"] = {{"light", 0}};  // there is no KHR light
+              j["extensions"]["KHR_xmp_json_ld"] = {{"packets", {{{"xmp:count", 1}, {"count", 2.5}}}}};
+              j["nodes"][0]["extensions"]["KHR_xmp_json_ld"] = {{"packet", 0}};
+            }),
+            "unexpected: ");
+  EXPECT_EQ(error([](auto& j) {  // but KHR_texture_transform, which the importer reads, is
+              j["extensionsUsed"] = {"KHR_texture_transform"};
+              j["materials"] = {{{"pbrMetallicRoughness",
+                                  {{"baseColorTexture",
+                                    {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"texCoord", -1}}}}}}}}}}};
+            }),
+            "materials[0].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.texCoord: -1 is not "
+            "an index (a whole number from 0 to 2147483647)");
   // Lights, cameras and materials as the specification bounds them.
   EXPECT_EQ(error([](auto& j) { j["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = -5; }, true),
             "extensions.KHR_lights_punctual.lights[0].intensity: must be a finite number of 0 or more (candela, or "
