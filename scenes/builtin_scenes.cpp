@@ -98,6 +98,8 @@ Light light(std::string name, LightType type, ShadowTechnique technique) {
   l.type = type;
   l.shadow = default_shadow_settings(type);
   l.shadow.technique = technique;
+  l.shadow.map_size = default_map_size(technique);
+  l.shadow.depth_format = default_depth_format(technique);
   return l;
 }
 

@@ -157,7 +157,9 @@ ShadowSettings read_shadow(const JsonIn& j, LightType type) {
   if (auto f = j.optional("filter")) s.filter = parse_name<ShadowFilter>(*f, parse_filter, filter_names(), "filter");
   if (auto b = j.optional("bias")) s.bias = read_bias(*b, s.bias);
   read_opt(j, "cull_front", s.cull_front);
-  s.map_size = default_map_size(s.technique);  // unless the file gives one
+  // The map's size and format are the technique's defaults unless the file gives them.
+  s.map_size = default_map_size(s.technique);
+  s.depth_format = default_depth_format(s.technique);
   read_opt(j, "map_size", s.map_size, 1, 16384);
   if (auto d = j.optional("depth_format"))
     s.depth_format = parse_name<DepthFormat>(*d, parse_depth_format, depth_format_names(), "depth format");

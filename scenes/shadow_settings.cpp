@@ -40,7 +40,7 @@ ShadowSettings default_shadow_settings(LightType light) {
     case LightType::hemispherical: s.technique = ShadowTechnique::pyramid; break;
   }
   s.map_size = default_map_size(s.technique);
-  s.depth_format = shading::tech::info(s.technique).depth_format;
+  s.depth_format = default_depth_format(s.technique);
   return s;
 }
 

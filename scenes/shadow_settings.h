@@ -66,7 +66,10 @@ using shading::tech::param_problem;
 // PCF, slope-scaled bias, and the technique's map size and depth format from the defaults table.
 ShadowSettings default_shadow_settings(LightType light);
 
-// The map side a technique uses when a scene does not give one (the defaults table's).
+// The map side and depth format a technique uses when a scene does not give them (the defaults table's).
 inline uint32_t default_map_size(ShadowTechnique technique) { return shading::tech::info(technique).map_size; }
+inline DepthFormat default_depth_format(ShadowTechnique technique) {
+  return shading::tech::info(technique).depth_format;
+}
 
 }  // namespace scenes

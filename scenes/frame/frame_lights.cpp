@@ -91,12 +91,22 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
   c.bias = s.bias;
   if (o.bias) c.bias.mode = *o.bias;
   c.cull_front = o.cull_front.value_or(s.cull_front);
-  c.map_size = o.map_size.value_or(int(s.map_size));
+  // A light whose map size or depth format is its own technique's default takes the overriding technique's
+  // (--technique esm on a classic d16 light builds ESM's d32f map); a value of its own it keeps, and so does
+  // every light under `none`, which builds no map.
+  const bool switched = o.technique && *o.technique != s.technique && scenes::default_map_size(c.technique) > 0;
+  const int light_size = switched && s.map_size == scenes::default_map_size(s.technique)
+                             ? int(scenes::default_map_size(c.technique))
+                             : int(s.map_size);
+  const raster::DepthFormat light_format = switched && s.depth_format == scenes::default_depth_format(s.technique)
+                                               ? scenes::default_depth_format(c.technique)
+                                               : s.depth_format;
+  c.map_size = o.map_size.value_or(light_size);
   // Checked before anything is allocated (issue 23: a 16384 cube map failed in the target's constructor, as
   // "target size: width 49152"), named where the value came from.
   if (auto why = tech::map_size_problem(c.technique, c.map_size))
     throw FrameError(std::string(o.map_size ? "map_size" : at + ".shadow.map_size") + ": " + *why);
-  c.depth_format = o.depth_format.value_or(s.depth_format);
+  c.depth_format = o.depth_format.value_or(light_format);
   c.filter_params.taps = o.poisson_taps.value_or(int(s.poisson_taps));
   if (c.filter_params.taps != 4 && c.filter_params.taps != 16)
     throw FrameError((o.poisson_taps ? std::string("poisson_taps") : at + ".shadow.poisson_taps") + ": " +

@@ -79,6 +79,36 @@ TEST(FrameLights, OverridesReachTheTechniqueSettings) {
   EXPECT_FALSE(d.config.filter_params.stratify_world);
 }
 
+// A technique override brings its own map size and depth format to a light that holds its technique's defaults,
+// and leaves a light's own values alone.
+TEST(FrameLights, ATechniqueOverrideBringsItsDefaultMap) {
+  scenes::Light sun = scenes::builtin_scene("tutorial").lights.at(0);
+  sun.shadow.map_size = scenes::default_map_size(sun.shadow.technique);  // 1024, d16: the classic map's defaults
+  ASSERT_EQ(sun.shadow.depth_format, raster::DepthFormat::d16);
+  frame::FrameConfig o;
+  o.technique = scenes::ShadowTechnique::lispsm;
+  frame::ResolvedLight r = frame::resolve_light(sun, 0, o);
+  EXPECT_EQ(r.config.map_size, 2048);
+  EXPECT_EQ(r.config.depth_format, raster::DepthFormat::d24);
+  o.technique = scenes::ShadowTechnique::esm;
+  r = frame::resolve_light(sun, 0, o);
+  EXPECT_EQ(r.config.map_size, 1024);
+  EXPECT_EQ(r.config.depth_format, raster::DepthFormat::d32f);
+  // The light's own values stay; the command line's own override both.
+  sun.shadow.map_size = 512, sun.shadow.depth_format = raster::DepthFormat::d24;
+  r = frame::resolve_light(sun, 0, o);
+  EXPECT_EQ(r.config.map_size, 512);
+  EXPECT_EQ(r.config.depth_format, raster::DepthFormat::d24);
+  o.map_size = 256, o.depth_format = raster::DepthFormat::d16;
+  r = frame::resolve_light(sun, 0, o);
+  EXPECT_EQ(r.config.map_size, 256);
+  EXPECT_EQ(r.config.depth_format, raster::DepthFormat::d16);
+  // The light's own technique named again changes nothing.
+  o = {};
+  o.technique = scenes::ShadowTechnique::shadowmap;
+  EXPECT_EQ(frame::resolve_light(sun, 0, o).config.depth_format, raster::DepthFormat::d24);
+}
+
 TEST(FrameLights, BadOverridesNameTheField) {
   const scenes::Light sun = scenes::builtin_scene("tutorial").lights.at(0);
   auto message = [&](auto set) {

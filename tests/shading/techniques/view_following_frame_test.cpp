@@ -44,13 +44,13 @@ const Case kCases[] = {
     {"duel_cascades_stable_blend", "duel", tech::Technique::cascades, "stabilize=true;cascade_blend=0.2", 0x278c3a4129be6edaull},
     {"duel_cascades_visible", "duel", tech::Technique::cascades, "view_range=visible", 0x3b06233669c1ed40ull},
     {"duel_cascades_lispsm", "duel", tech::Technique::cascades, "cascade_warp=lispsm", 0x0cd381b9fa160c71ull},
-    {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0x3bcc96392b2d26fdull},
+    {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0xd415116e4e7e48a7ull},
     {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0x987ca86d73a61dbbull},
     {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0x9b500cc842e9a882ull},
     {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x44cec22f04e2aaadull},
-    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0x57ba760862e3f574ull},
-    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x674ff6569f0e009full},
-    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0xd2b28973131a769bull},
+    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0xf76278c5e56f3d57ull},
+    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x9fa116fcdecb8d28ull},
+    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0x381545bc1c1c9f89ull},
 };
 
 class ViewFollowingGolden : public testing::TestWithParam<Case> {};
