@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -104,18 +105,20 @@ std::vector<std::optional<int>> parse_sizes(const std::string& text) {
   return out;
 }
 
-// The option a FrameError's field came from.
-CliError as_cli_error(const frame::FrameError& e) {
+// A FrameError named where its field came from: the sweep's option for a field the command line set, else the
+// scene file's field (a --light choice's lights[0] renamed to the light's place in the file), as render names them.
+CliError as_cli_error(const frame::FrameError& e, const std::string& scene, std::optional<size_t> chosen_light) {
   const std::string what = e.what();
   const size_t colon = what.find(": ");
-  const std::string field = colon == std::string::npos ? "" : what.substr(0, colon);
-  std::string option = field;
-  if (field == "size") option = "--size";
-  else if (field == "map_size") option = "--sizes";
-  else if (field.find("technique") != std::string::npos) option = "--techniques";
-  else if (field.find("filter") != std::string::npos) option = "--filters";
-  else if (field.find("bias") != std::string::npos) option = "--biases";
-  return CliError(option.empty() ? "eval" : option, colon == std::string::npos ? what : what.substr(colon + 2));
+  if (colon == std::string::npos) return CliError("eval", what);
+  static const std::map<std::string, std::string> kOptions = {
+      {"size", "--size"}, {"map_size", "--sizes"}, {"technique", "--techniques"}, {"filter", "--filters"},
+      {"bias", "--biases"}};
+  const std::string field = light_field(what.substr(0, colon), chosen_light);
+  std::string where = field;
+  if (const auto it = kOptions.find(field); it != kOptions.end()) where = it->second;
+  else if (std::error_code ec; std::filesystem::is_regular_file(scene, ec)) where = scene + ": " + field;
+  return CliError(where, what.substr(colon + 2));
 }
 
 // One row: a combination's score for one light.
@@ -178,11 +181,13 @@ int run_eval(const EvalArgs& a) {
       for (const auto& b : biases)
         for (const auto& s : sizes) combos.push_back({t, f, b, s});
   const size_t sweep_size = combos.size();
+  nlohmann::json labels = nlohmann::json::array();  // the whole sweep's, so that eval-merge can tell sweeps apart
+  for (const Combination& c : combos) labels.push_back(c.label());
 
   const scenes::StageOptions stage;  // a bare glTF model gets its sun, ground and camera, as in render
   std::vector<std::string> notes;
   scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
-  choose_light(scene, a.light);
+  const std::optional<size_t> chosen_light = choose_light(scene, a.light);
   const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);  // once for the sweep
   print_notes(notes);
   raster::Renderer renderer(check_threads(a.threads));
@@ -274,14 +279,20 @@ int run_eval(const EvalArgs& a) {
          {{"triangles", ref.triangles}, {"bvh_ms", ref.bvh_ms}, {"rays", ref.exact.rays}, {"rays_ms", ref.exact.ms},
           {"rays_per_second", rays_per_s}, {"epsilon", ref.exact.epsilon}}},
         {"scoring", {{"shadow_below", options.shadow_below}, {"near_radius_pixels", options.near_radius}}},
-        {"sweep", {{"combinations", sweep_size}, {"shard", shard.index}, {"shards", shard.count}}},
+        {"sweep",
+         {{"combinations", sweep_size},
+          {"labels", labels},
+          {"light", chosen_light ? nlohmann::json(*chosen_light) : nlohmann::json()},
+          {"cull_front", a.cull_front ? nlohmann::json(*a.cull_front) : nlohmann::json()},
+          {"shard", shard.index},
+          {"shards", shard.count}}},
         {"shimmer", {{"camera_pixels", a.shimmer_pixels}, {"light_degrees", a.shimmer_degrees}}},
         {"results", rows}};
     const std::filesystem::path dir(a.out);
     write_eval_report(dir, report, sheets);
     out_folder.commit();
   } catch (const frame::FrameError& e) {
-    throw as_cli_error(e);
+    throw as_cli_error(e, a.scene, chosen_light);
   }
   return 0;
 }

@@ -14,6 +14,7 @@
 #include "cli/cli_common.h"
 #include "cli/json_output.h"
 #include "scenes/io/atomic_write.h"
+#include "scenes/json_in.h"
 #include "raster/simd/isa.h"
 
 namespace cli {
@@ -25,59 +26,92 @@ struct MergeArgs {
   std::string out;
 };
 
-nlohmann::json read_doc(const std::string& file) {
+// One shard's document, its fields checked where they are read: a missing or mistyped one is named with the file
+// (`a.json: shard.count: expected a whole number ...`).
+struct ShardDoc {
+  nlohmann::json doc;
+  nlohmann::json batch;  // the batch file's name, or null for scene arguments
+  uint32_t jobs_total = 0, index = 0, count = 0;
+  std::vector<nlohmann::json> jobs;
+  std::vector<uint32_t> job_index;
+  size_t frames = 0;
+  double wall_ms = 0;
+};
+
+constexpr uint32_t kMost = 1u << 30;
+
+ShardDoc read_doc(const std::string& file) {
   std::ifstream in(file, std::ios::binary);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec) || !in) throw CliError(file, "cannot be read (no such file?)");
   std::stringstream text;
   text << in.rdbuf();
-  nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
-  if (j.is_discarded() || !j.is_object()) throw CliError(file, "is not a JSON document");
-  if (j.value("command", "") != "render") throw CliError(file, "is not the output of `shadowlab render --json`");
-  for (const char* key : {"jobs_total", "shard", "jobs", "summary"})
-    if (!j.contains(key)) throw CliError(file, std::string("has no \"") + key + "\"");
-  return j;
+  ShardDoc d;
+  d.doc = nlohmann::json::parse(text.str(), nullptr, false);
+  if (d.doc.is_discarded() || !d.doc.is_object()) throw CliError(file, "is not a JSON document");
+  if (d.doc.value("command", "") != "render") throw CliError(file, "is not the output of `shadowlab render --json`");
+  const scenes::JsonIn root(d.doc, "", file);
+  const scenes::JsonIn batch = root.member("batch");
+  if (!batch.value().is_null()) batch.string();
+  d.batch = batch.value();
+  d.jobs_total = root.member("jobs_total").integer(0, kMost);
+  const scenes::JsonIn shard = root.member("shard");
+  d.count = shard.member("count").integer(1, kMost);
+  d.index = shard.member("index").integer(0, d.count - 1);
+  for (const scenes::JsonIn& job : root.member("jobs").items()) {
+    d.job_index.push_back(job.member("index").integer(0, kMost));
+    d.frames += job.member("frames").items().size();
+    d.jobs.push_back(job.value());
+  }
+  d.wall_ms = root.member("summary").member("wall_ms").number();
+  return d;
 }
 
 int run_merge(const MergeArgs& a) {
   if (!a.out.empty()) check_output_dir(a.out, "--out");
-  std::vector<nlohmann::json> docs;
+  std::vector<ShardDoc> docs;
   for (const std::string& f : a.shards) docs.push_back(read_doc(f));
-  const nlohmann::json& first = docs.front();
-  const size_t count = first["shard"].value("count", size_t(0));
+  const ShardDoc& first = docs.front();
+  const size_t count = first.count;
   if (count != docs.size())
     throw CliError(a.shards[0], "belongs to a run of " + std::to_string(count) + " shards, " +
                                     std::to_string(docs.size()) + " given");
   std::vector<bool> seen(count, false);
-  nlohmann::json jobs = nlohmann::json::array();
+  std::vector<std::pair<uint32_t, const nlohmann::json*>> jobs;  // batch index, job
   size_t frames = 0;
   double wall_ms = 0;
   for (size_t i = 0; i < docs.size(); ++i) {
-    const nlohmann::json& d = docs[i];
-    if (d["batch"] != first["batch"] || d["jobs_total"] != first["jobs_total"] || d["shard"]["count"] != count)
+    const ShardDoc& d = docs[i];
+    if (d.batch != first.batch || d.jobs_total != first.jobs_total || d.count != count)
       throw CliError(a.shards[i], "belongs to another run than " + a.shards[0] + " (batch, jobs or shard count differ)");
-    const size_t index = d["shard"].value("index", count);
-    if (index >= count) throw CliError(a.shards[i], "has no valid shard index");
-    if (seen[index]) throw CliError(a.shards[i], "repeats shard " + std::to_string(index));
-    seen[index] = true;
-    for (const auto& job : d["jobs"]) {
-      jobs.push_back(job);
-      frames += job.at("frames").size();
+    if (seen[d.index]) throw CliError(a.shards[i], "repeats shard " + std::to_string(d.index));
+    seen[d.index] = true;
+    for (size_t k = 0; k < d.jobs.size(); ++k) {
+      // Shard I runs the jobs K with K mod N = I: a job outside its shard's share is another run's.
+      if (d.job_index[k] >= first.jobs_total || d.job_index[k] % count != d.index)
+        throw CliError(a.shards[i], "jobs[" + std::to_string(k) + "].index: " + std::to_string(d.job_index[k]) +
+                                        " is not a job of shard " + std::to_string(d.index) + "/" +
+                                        std::to_string(count) + " of " + std::to_string(first.jobs_total));
+      jobs.emplace_back(d.job_index[k], &d.jobs[k]);
     }
-    wall_ms += d["summary"].value("wall_ms", 0.0);
+    frames += d.frames;
+    wall_ms += d.wall_ms;
   }
-  std::stable_sort(jobs.begin(), jobs.end(), [](const nlohmann::json& x, const nlohmann::json& y) {
-    return x.at("index").get<size_t>() < y.at("index").get<size_t>();
-  });
-  if (jobs.size() != first["jobs_total"].get<size_t>())
+  std::stable_sort(jobs.begin(), jobs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (size_t k = 1; k < jobs.size(); ++k)
+    if (jobs[k].first == jobs[k - 1].first)
+      throw CliError(a.shards[0], "job " + std::to_string(jobs[k].first) + " is in the shards twice");
+  if (jobs.size() != first.jobs_total)
     throw CliError(a.shards[0], "the shards hold " + std::to_string(jobs.size()) + " jobs of " +
-                                    std::to_string(first["jobs_total"].get<size_t>()));
+                                    std::to_string(first.jobs_total));
+  nlohmann::json merged_jobs = nlohmann::json::array();
+  for (const auto& job : jobs) merged_jobs.push_back(*job.second);
   nlohmann::json merged = {{"command", "render"},
-                           {"batch", first["batch"]},
-                           {"jobs_total", first["jobs_total"]},
+                           {"batch", first.batch},
+                           {"jobs_total", first.jobs_total},
                            {"shard", {{"index", 0}, {"count", 1}}},
                            {"merged_from", count},
-                           {"jobs", jobs},
+                           {"jobs", merged_jobs},
                            {"summary", {{"jobs", jobs.size()}, {"frames", frames}, {"wall_ms", wall_ms}}}};
   if (a.out.empty()) {
     print_json(merged);

@@ -1,6 +1,6 @@
 // A read cursor over a parsed JSON document that knows its key path, so every type or value error and every
 // unknown key becomes a SceneError `file: objects[2].transform.scale: expected an array of 3 numbers`.
-// Internal to the scenes module's JSON reader.
+// Used by the scenes module's JSON reader and by the CLI's readers of its own documents (the merge commands).
 #pragma once
 #include <cstdint>
 #include <initializer_list>

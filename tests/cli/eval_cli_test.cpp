@@ -3,6 +3,7 @@
 // and bad input: one error line naming the option, exit code 2, no output written.
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -173,6 +174,35 @@ TEST_F(EvalCli, ShardsMergeIntoTheWholeSweep) {
   expect_bad(sweep + "--shard 3/3 --out m2", "--shard", "m2");
   expect_bad(sweep + "--shard 1 --out m2", "--shard", "m2");
   expect_bad(sweep + "--shard -1/2 --out m2", "--shard", "m2");
+  // A shard of a sweep as large but over other combinations, or with another cull-front override, is another
+  // sweep's.
+  ASSERT_EQ(shadowlab(dir, "eval scene.json --techniques shadowmap --filters hard,poisson --biases slope,constant "
+                           "--sizes 128 --size 96x72 --shard 2/3 --out other2").code, 0);
+  expect_bad("eval-merge s0 s1 other2 --out m2", "other2/eval.json", "m2");
+  ASSERT_EQ(shadowlab(dir, sweep + "--cull-front --shard 2/3 --out culled2").code, 0);
+  expect_bad("eval-merge s0 s1 culled2 --out m2", "culled2/eval.json", "m2");
+  // A damaged report is named with its file and field.
+  auto damaged = [&](const std::string& name, const std::function<void(nlohmann::json&)>& change) {
+    fs::copy(dir / "s2", dir / name);
+    nlohmann::json j = nlohmann::json::parse(testsupport::slurp(dir / name / "eval.json"));
+    change(j);
+    std::ofstream(dir / name / "eval.json") << j.dump();
+  };
+  damaged("bad_shard", [](auto& j) { j["sweep"]["shard"] = "2"; });
+  expect_bad("eval-merge s0 s1 bad_shard --out m2", "bad_shard/eval.json: sweep.shard", "m2");
+  damaged("no_column", [](auto& j) { j["results"][0].erase("false_lit_pct"); });
+  expect_bad("eval-merge s0 s1 no_column --out m2", "no_column/eval.json: results[0]", "m2");
+  damaged("foreign_row", [](auto& j) { j["results"][0]["index"] = 1; });  // combination 1 is shard 1's
+  expect_bad("eval-merge s0 s1 foreign_row --out m2", "foreign_row/eval.json: results[0].combination", "m2");
+}
+
+// An error in a scene's field is named with the file and the light's own place in it, also with --light.
+TEST_F(EvalCli, SceneFieldErrorsNameTheFile) {
+  std::ofstream(dir / "two.json") << R"({"objects": [{"primitive": {"type": "plane", "size": [6, 6]}}],
+    "lights": [{"type": "directional", "direction": [0, -1, 0]},
+               {"type": "directional", "direction": [0, -1, 0], "shadow": {"map_size": 16384}}]})";
+  expect_bad("eval two.json --size 32x24 --techniques cascades --light 1 --out r", "two.json: lights[1].shadow.map_size",
+             "r");
 }
 
 TEST_F(EvalCli, ShimmerColumnsOnRequest) {
