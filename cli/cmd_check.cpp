@@ -24,6 +24,7 @@
 #include "cli/image_compare.h"
 #include "cli/json_output.h"
 #include "cli/render_line.h"
+#include "scenes/builtin_scenes.h"
 #include "scenes/io/atomic_write.h"
 #include "scenes/io/io_error.h"
 #include "raster/simd/isa.h"
@@ -97,7 +98,10 @@ Manifest read_manifest(const std::string& file) {
       throw CliError(where + ".scene", "expected a scene file (relative to the manifest) or a built-in name");
     x.scene = e["scene"].get<std::string>();
     // A scene file is relative to the manifest; a built-in name stays as it is.
-    if (fs::exists(m.dir / x.scene, ec)) x.scene = (m.dir / x.scene).string();
+    // A file, not a folder: a folder beside the manifest named like a built-in scene does not hide the scene.
+    const fs::path beside = m.dir / x.scene;
+    if (fs::is_regular_file(beside, ec) || (fs::exists(beside, ec) && !scenes::is_builtin_scene(x.scene)))
+      x.scene = beside.string();
     if (e.contains("args")) {
       if (!e["args"].is_array()) throw CliError(where + ".args", "expected an array of strings");
       for (const auto& w : e["args"]) {
@@ -218,10 +222,15 @@ int run_check(const CheckArgs& a) {
     for (const fs::path& f : stale) fs::remove(f, ec);
   } else {
     std::error_code ec;
-    for (const Entry& e : m.entries)
-      if (!fs::exists(m.goldens / (e.name + ".png"), ec))
-        throw CliError((m.goldens / (e.name + ".png")).string(), "no golden for entry " + e.name +
-                                                                    " (run check --update to create it)");
+    // An entry never updated is an error (exit 2), before anything renders; a map missing from a golden maps
+    // folder that exists is a difference (a map the render now writes, exit 1).
+    for (const Entry& e : m.entries) {
+      const fs::path frame = m.goldens / (e.name + ".png"), maps = m.goldens / (e.name + "-maps");
+      if (!fs::exists(frame, ec))
+        throw CliError(frame.string(), "no golden for entry " + e.name + " (run check --update to create it)");
+      if (e.maps && !fs::is_directory(maps, ec))
+        throw CliError(maps.string(), "no golden maps for entry " + e.name + " (run check --update to create them)");
+    }
     for (const Entry& e : m.entries) {
       progress.update("checking " + e.name);
       const Rendered r = render_entry(e, scratch.path);

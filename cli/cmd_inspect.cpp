@@ -5,6 +5,7 @@
 // JSON object; `--json` prints them as they are, otherwise they are printed as text.
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -207,6 +208,13 @@ int run_inspect(const InspectArgs& a) {
     }
   }
   for (const std::string& f : a.files) image_kind(f);  // every file checked before any work
+  if (!a.png.empty() && a.files.size() > 1) {  // no preview replaces another's (a/light0.exr and b/light0.exr)
+    std::map<std::filesystem::path, std::string> owner;
+    for (const std::string& f : a.files)
+      if (const auto [it, fresh] = owner.emplace(preview_path(a, f), f); !fresh)
+        throw CliError(f, "its preview " + it->first.string() + " would replace " + it->second +
+                              "'s (the previews are named by the files' stems; inspect them apart)");
+  }
   // Previews are staged and written together once every file has been read: a bad file writes none (and a
   // preview directory this run created is removed again).
   std::filesystem::path created_dir;

@@ -120,7 +120,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   if (!a.depth_format.empty()) config.depth_format = scenes::parse_depth_format(a.depth_format);
   if (a.shadow_size) config.map_size = int(*a.shadow_size);
   config.cull_front = a.cull_front;
-  if (a.poisson_taps != 0) config.poisson_taps = a.poisson_taps;
+  if (a.poisson_taps) config.poisson_taps = *a.poisson_taps;
   config.poisson_spread = a.poisson_spread;
   config.bias_constant = a.bias_constant;
   config.bias_slope = a.bias_slope;
@@ -141,7 +141,14 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   frame::FrameCache cache;             // projective maps live across frames: only changed casters are rebuilt
   nlohmann::json frames = nlohmann::json::array();
   for (int i = 0; i < a.frames; ++i) {
-    if (a.animate && i > 0) scene = scenes::builtin_scene(a.scene, {double(i) / a.fps});
+    if (a.animate && i > 0) {
+      scenes::Scene moved = scenes::builtin_scene(a.scene, {double(i) / a.fps.value_or(24.0)});
+      // The command line's choices made again on the moved scene: an orbit camera where the first frame put it,
+      // and the light --light picked.
+      if (config.camera >= moved.cameras.size()) moved.cameras.push_back(scene.cameras[config.camera]);
+      choose_light(moved, a.light);
+      scene = std::move(moved);
+    }
     progress.update(label + (a.frames > 1 ? "frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames) : "rendering"));
     const Stopwatch watch;
     if (result) {  // its outputs are written: its targets serve the next frame
@@ -289,7 +296,16 @@ Command add_render_command(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand(
       "render", "Render scenes: shadow maps, then the shaded camera view (several scenes or --batch in one process)");
   add_render_options(*app, args);
-  return {app, [args] { return run_render(*args); }};
+  return {app, [app, args] {
+            // A batch's jobs are its lines: an option given beside --batch would apply to none of them.
+            if (!args->batch.empty())
+              for (const CLI::Option* o : app->get_options())
+                if (o->count() > 0 && !o->get_positional() && o->get_name() != "--batch" &&
+                    o->get_name() != "--shard" && o->get_name() != "--json")
+                  throw CliError(o->get_name(), "does not apply to a --batch run: give it on each line of " +
+                                                    args->batch + " (beside --batch only --shard and --json)");
+            return run_render(*args);
+          }};
 }
 
 SHADOWLAB_ISA_END

@@ -107,8 +107,8 @@ void check_job(const RenderArgs& a) {
              scenes::depth_format_names());
   if (!a.technique.empty() && !shading::tech::info(*scenes::parse_technique(a.technique)).built)
     throw CliError("--technique", "technique " + a.technique + " is not built yet");
-  if (a.poisson_taps != 0 && a.poisson_taps != 4 && a.poisson_taps != 16)
-    throw CliError("--poisson-taps", std::to_string(a.poisson_taps) + " is not 4 or 16");
+  if (a.poisson_taps && *a.poisson_taps != 4 && *a.poisson_taps != 16)
+    throw CliError("--poisson-taps", std::to_string(*a.poisson_taps) + " is not 4 or 16");
   // The widest bounds any technique takes; each technique's own (16 and up for most, 1 for projective, less than
   // 16384 where maps share a target) are checked per light (vocabulary.h's map_size_problem).
   if (a.shadow_size && (*a.shadow_size < 1 || *a.shadow_size > 16384))
@@ -119,8 +119,9 @@ void check_job(const RenderArgs& a) {
   for (const shading::tech::ParamSpec* p : all_params())
     if (const auto it = a.params.find(std::string(p->key)); it != a.params.end())
       if (auto why = shading::tech::value_problem(*p, it->second)) throw CliError(std::string(p->option), *why);
+  if (a.fps && !a.animate) throw CliError("--fps", "sets the frame rate of --animate, which is not given");
   if (a.animate) {
-    if (!std::isfinite(a.fps) || !(a.fps > 0.0)) throw CliError("--fps", "expected a frame rate above 0");
+    if (a.fps && (!std::isfinite(*a.fps) || !(*a.fps > 0.0))) throw CliError("--fps", "expected a frame rate above 0");
     bool animated = false;
     std::error_code ec;
     if (!std::filesystem::exists(a.scene, ec))

@@ -31,9 +31,9 @@ struct RenderArgs {
   int frames = 1;
   bool stats = false;
   std::optional<bool> cull_front;  // --cull-front / --no-cull-front
-  int poisson_taps = 0;            // 0: the light's setting
+  std::optional<int> poisson_taps;  // left out: the light's setting
   bool animate = false;            // --animate: rebuild an animated built-in scene per frame
-  double fps = 24.0;               // --fps: frame K is at time K / fps
+  std::optional<double> fps;        // --fps (with --animate; default 24): frame K is at time K / fps
   // Value overrides, set only when given on the command line.
   std::optional<float> poisson_spread, bias_constant, bias_slope, bias_slope_max, offset_factor, offset_units,
       normal_offset;

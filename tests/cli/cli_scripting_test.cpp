@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <regex>
 #include <string>
@@ -188,6 +189,10 @@ TEST_F(CliScripting, InspectReadsOtherRenderersExrs) {
   ASSERT_EQ(tool("--pattern constant:color=0.5,0.5 8x4 2 --chnames G,B -d float -o gb.exr"), 0);
   testsupport::expect_bad_run(dir, "inspect gb.exr", "gb.exr");  // no depth channel: --channel is suggested
   EXPECT_THAT(shadowlab(dir, "inspect gb.exr").err, ::testing::HasSubstr("--channel"));
+  // Two files with one stem would share one preview: refused before any is written.
+  fs::create_directories(dir / "other");
+  fs::copy_file(dir / "r.exr", dir / "other" / "r.exr");
+  testsupport::expect_bad_run(dir, "inspect r.exr other/r.exr --png same_stems", "other/r.exr", "same_stems");
 }
 
 TEST_F(CliScripting, GoldenWorkflowFailsOnOnePixelAndPassesAfterUpdate) {
@@ -216,6 +221,14 @@ TEST_F(CliScripting, GoldenWorkflowFailsOnOnePixelAndPassesAfterUpdate) {
   testsupport::expect_bad_run(dir, "check bad.json", "bad.json: entries[0].args");
   std::ofstream(dir / "bad2.json") << R"({"entries": [{"name": "../x", "scene": "tutorial"}]})";
   testsupport::expect_bad_run(dir, "check bad2.json", "bad2.json: entries[0].name");
+  // An entry whose maps were never updated is an error (exit 2), like a missing frame golden; a folder beside
+  // the manifest named like a built-in scene does not hide the scene.
+  fs::rename(dir / "goldens" / "room-maps", dir / "room-maps-kept");
+  testsupport::expect_bad_run(dir, "check manifest.json", "./goldens/room-maps");
+  fs::rename(dir / "room-maps-kept", dir / "goldens" / "room-maps");
+  fs::create_directories(dir / "tutorial");
+  r = shadowlab(dir, "check manifest.json");
+  EXPECT_EQ(r.code, 0) << r.err;
 }
 
 // Jobs of a batch file render in one process exactly what separate runs render; its shards, merged, are the
@@ -257,6 +270,23 @@ TEST_F(CliScripting, BatchesAndShards) {
   EXPECT_EQ(strip(merged["jobs"]), strip(whole["jobs"]));
   testsupport::expect_bad_run(dir, "render-merge s0.json", "s0.json");      // a shard is missing
   testsupport::expect_bad_run(dir, "render-merge s0.json s0.json", "s0.json");  // one shard twice
+  // A damaged shard document is named with its file and field, whatever is missing or mistyped.
+  auto damaged = [&](const char* name, const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json d = s0;
+    change(d);
+    std::ofstream(dir / name) << d.dump();
+  };
+  damaged("no_batch.json", [](auto& d) { d.erase("batch"); });
+  testsupport::expect_bad_run(dir, "render-merge no_batch.json s1.json", "no_batch.json");
+  damaged("bad_count.json", [](auto& d) { d["shard"]["count"] = "2"; });
+  testsupport::expect_bad_run(dir, "render-merge bad_count.json s1.json", "bad_count.json: shard.count");
+  damaged("no_frames.json", [](auto& d) { d["jobs"][1].erase("frames"); });
+  testsupport::expect_bad_run(dir, "render-merge no_frames.json s1.json", "no_frames.json: jobs[1]");
+  damaged("foreign_job.json", [](auto& d) { d["jobs"][0]["index"] = 1; });  // shard 0/2 runs jobs 0 and 2
+  testsupport::expect_bad_run(dir, "render-merge foreign_job.json s1.json", "foreign_job.json: jobs[0].index");
+  // Options beside --batch would apply to none of its lines: refused, not ignored.
+  testsupport::expect_bad_run(dir, "render --batch jobs.txt --threads 2", "--threads");
+  testsupport::expect_bad_run(dir, "render --batch jobs.txt --technique esm --json", "--technique");
   std::ofstream(dir / "badjobs.txt") << "tutorial --out ok.png\nduel --filter soft --out x.png\n";
   testsupport::expect_bad_run(dir, "render --batch badjobs.txt", "badjobs.txt:2", "ok.png");  // nothing rendered
   testsupport::expect_bad_run(dir, "render tutorial duel --out same.png", "--out", "same.png");

@@ -190,6 +190,7 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
   expect_bad("render tutorial --size 16385x10 --out f.png", "--size", "f.png");
   expect_bad("render tutorial --shadow-size 0 --out f.png", "--shadow-size", "f.png");
   expect_bad("render tutorial --poisson-taps 5 --out f.png", "--poisson-taps", "f.png");
+  expect_bad("render tutorial --poisson-taps 0 --out f.png", "--poisson-taps", "f.png");  // not "the light's own"
   expect_bad("render tutorial --poisson-spread -1 --out f.png", "--poisson-spread", "f.png");
   expect_bad("render tutorial --filter poisson --poisson-spread 2 --out f.png", "--poisson-spread", "f.png");
   {  // a side beyond long long is quoted as given, not as CLI11's saturated 9223372036854775807

@@ -72,6 +72,18 @@ TEST_F(ProjectiveCli, AnimatedFramesRebuildTheWalkers) {
   EXPECT_EQ(maps, 5u);
 }
 
+// The command line's camera and light choices hold for every frame of an animation, not only the first: an
+// orbit camera stays where the first frame put it while the walkers move.
+TEST_F(ProjectiveCli, AnimatedFramesKeepTheChosenCamera) {
+  Outcome r = shadowlab(dir, "render projective --size 48x27 --threads 0 --frames 3 --animate --camera orbit:30,20 "
+                             "--light 0 --out 'o_%d.png'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = shadowlab(dir, "render projective --size 48x27 --threads 0 --camera orbit:30,20 --out still.png");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(testsupport::slurp(dir / "o_1.png"), testsupport::slurp(dir / "still.png"));
+  EXPECT_NE(testsupport::slurp(dir / "o_1.png"), testsupport::slurp(dir / "o_3.png")) << "the walkers moved";
+}
+
 TEST_F(ProjectiveCli, BadValuesNameTheOption) {
   expect_bad("render projective --size 32x18 --projective-mode twice", "--projective-mode");
   expect_bad("render projective --size 32x18 --projective-textures 0", "--projective-textures");
@@ -79,6 +91,7 @@ TEST_F(ProjectiveCli, BadValuesNameTheOption) {
   expect_bad("render tutorial --size 32x18 --animate", "--animate");
   expect_bad("render projective --size 32x18 --animate --fps 0", "--fps");
   expect_bad("render projective --size 32x18 --animate --fps -2", "--fps");
+  expect_bad("render projective --size 32x18 --fps 30", "--fps");  // a frame rate with nothing to animate
   expect_bad("render projective --size 32x18 --blur-passes 17", "--blur-passes");
   expect_bad("render projective --size 32x18 --blur-passes 1 --blur-offset 2", "--blur-offset");
   expect_bad("render projective --size 32x18 --blur-offset 0.5", "--blur-offset");
