@@ -22,7 +22,4 @@ SceneDesc load_scene_desc(const std::filesystem::path& path);
 // The document as JSON text (two-space indent, keys in a fixed order, floats in their shortest exact form).
 std::string scene_json_text(const SceneDesc& desc);
 
-// Writes scene_json_text() to a file; throws SceneError when the file cannot be written.
-void save_scene_desc(const SceneDesc& desc, const std::filesystem::path& path);
-
 }  // namespace scenes

@@ -2,7 +2,6 @@
 // gives an equal document. Floats are written in their shortest form that reads back to the same float.
 #include <charconv>
 #include <cstdlib>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -269,14 +268,6 @@ std::string scene_json_text(const SceneDesc& d) {
   std::string out;
   pretty(j, 0, out);
   return out + "\n";
-}
-
-void save_scene_desc(const SceneDesc& desc, const std::filesystem::path& path) {
-  const std::string text = scene_json_text(desc);
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw SceneError(path.string(), "", "cannot write file");
 }
 
 }  // namespace scenes

@@ -147,7 +147,7 @@ TEST(SceneJson, EveryFieldRoundTrips) {
   EXPECT_EQ(back, d) << text;
   EXPECT_EQ(scenes::scene_json_text(back), text) << "writing is stable";
 
-  scenes::save_scene_desc(d, dir / "scene.json");
+  std::ofstream(dir / "scene.json", std::ios::binary) << text;  // as `shadowlab scene export` writes it
   const scenes::Scene a = scenes::build_scene(d, {dir, "scene.json"});
   const scenes::Scene b = scenes::load_scene(dir / "scene.json");
   EXPECT_EQ(a, b);
@@ -199,6 +199,28 @@ TEST(SceneJson, MapSizeDefaultsFollowTheTechnique) {
   EXPECT_EQ(d.lights[1].shadow.map_size, 64u);
   EXPECT_EQ(d.lights[2].shadow.map_size, 1024u);
   EXPECT_EQ(d.lights[3].shadow.map_size, 1024u);
+}
+
+// Likewise the depth format (docs/scene-format.md): d32f for the filterable maps, d24 for the warped ones and
+// PCSS, d16 for the classic map; a given format is kept.
+TEST(SceneJson, DepthFormatDefaultsFollowTheTechnique) {
+  const scenes::SceneDesc d = scenes::parse_scene_json(R"({
+    "objects": [{"primitive": {"type": "box"}}],
+    "lights": [{"type": "directional", "shadow": {"technique": "esm"}},
+               {"type": "directional", "shadow": {"technique": "esm", "depth_format": "d16"}},
+               {"type": "directional", "shadow": {"technique": "lispsm"}},
+               {"type": "spot", "shadow": {"technique": "pcss"}},
+               {"type": "directional", "shadow": {"technique": "shadowmap"}},
+               {"type": "point", "shadow": {"technique": "irregular"}}]
+  })", "formats.json");
+  using D = raster::DepthFormat;
+  EXPECT_EQ(d.lights[0].shadow.depth_format, D::d32f);
+  EXPECT_EQ(d.lights[1].shadow.depth_format, D::d16);
+  EXPECT_EQ(d.lights[2].shadow.depth_format, D::d24);
+  EXPECT_EQ(d.lights[2].shadow.map_size, 2048u);
+  EXPECT_EQ(d.lights[3].shadow.depth_format, D::d24);
+  EXPECT_EQ(d.lights[4].shadow.depth_format, D::d16);
+  EXPECT_EQ(d.lights[5].shadow.depth_format, D::d32f);
 }
 
 TEST(SceneJson, ExamplesLoad) {
