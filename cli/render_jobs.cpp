@@ -134,6 +134,12 @@ void check_job(const RenderArgs& a) {
     if (!(el > 0.0f && el <= 90.0f)) throw CliError("--sun", "expected AZ,EL with an elevation above 0 and at most 90 degrees");
     (void)az;
   }
+  // The staging options shape a bare glTF model only (scenes/stage.h): on a scene file or a built-in they would
+  // do nothing.
+  if (const std::string ext = lower_extension(a.scene); ext != ".gltf" && ext != ".glb") {
+    const char* given = !a.sun.empty() ? "--sun" : a.up != "y" ? "--up" : !a.ground ? "--no-ground" : nullptr;
+    if (given) throw CliError(given, "stages a .gltf/.glb model; " + a.scene + " is a scene of its own");
+  }
   if (a.camera.rfind("orbit:", 0) == 0) parse_orbit(a.camera);
   // Each output: its kind, its folder, and its frame field (the folder of a pattern is checked as it would be
   // for frame 1).

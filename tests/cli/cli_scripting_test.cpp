@@ -354,6 +354,10 @@ TEST_F(CliScripting, BareGltfModelGetsASunAGroundAndAShadow) {
   testsupport::expect_bad_run(dir, "render tutorial --camera orbit:10 --out x.png", "--camera", "x.png");
   testsupport::expect_bad_run(dir, "render tutorial --sun 10,-5 --out x.png", "--sun", "x.png");
   testsupport::expect_bad_run(dir, "render tutorial --up x --out x.png", "--up", "x.png");
+  // Staging options on a scene that is not a bare model would do nothing: refused.
+  testsupport::expect_bad_run(dir, "render tutorial --sun 90,40 --out x.png", "--sun", "x.png");
+  testsupport::expect_bad_run(dir, "render tutorial --up z --out x.png", "--up", "x.png");
+  testsupport::expect_bad_run(dir, "render tutorial --no-ground --out x.png", "--no-ground", "x.png");
   // The staged sun is a light like any other: --light sun keeps the shadow.
   EXPECT_GT(shadowed("fox/Fox.gltf", "--light sun").first, 150u);
 }
