@@ -19,6 +19,7 @@
 #include "scenes/frame/camera_surface.h"
 #include "scenes/frame/develop.h"
 #include "scenes/frame/frame_lights.h"
+#include "shading/techniques/param_use.h"
 #include "scenes/frame/projective_shaders.h"
 #include "scenes/io/scene_textures.h"
 #include "scenes/scene_queries.h"
@@ -59,16 +60,26 @@ struct FrameCasters {
   tech::CasterGeometry geometry() const { return {soup.opaque.positions, soup.opaque.indices, masked}; }
 };
 
-// The frame's technique parameters must each reach some light: one no light's technique takes would do nothing.
+// The frame's technique parameters must each reach some light: one that no light's technique takes, or that
+// every light taking it leaves unread with its settings (tech::unread_param), would do nothing.
 void check_params_used(const FrameConfig& config, const std::vector<ResolvedLight>& lights) {
   for (const auto& [key, value] : config.params) {
     bool used = false;
+    std::optional<std::string> unread;  // why the first light that takes it does not read it
     for (const ResolvedLight& r : lights)
       if (const tech::ParamSpec* spec = tech::find_param(r.config.technique, key)) {
         if (auto why = tech::value_problem(*spec, value)) throw FrameError("params." + key + ": " + *why);
-        used = true;
+        std::optional<std::string> why;
+        try {
+          why = tech::unread_param(r.config, r.desc.type, key);
+        } catch (const tech::TechniqueError& e) {
+          throw FrameError(e.what());
+        }
+        if (!why) used = true;
+        else if (!unread) unread = why;
       }
     if (used) continue;
+    if (unread) throw FrameError("params." + key + ": " + *unread);
     std::string takers;
     for (const tech::TechniqueInfo& t : tech::kTechniques)
       if (t.built && tech::find_param(t.id, key)) takers += (takers.empty() ? "" : ", ") + std::string(t.name);

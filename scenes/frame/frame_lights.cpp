@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include "raster/simd/isa.h"
+#include "shading/techniques/param_use.h"
 
 namespace frame {
 SHADOWLAB_ISA_BEGIN
@@ -129,6 +130,22 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
     if (tech::find_param(c.technique, key)) c.params[key] = value;
   for (const auto& [key, value] : o.params)
     if (tech::find_param(c.technique, key)) c.params[key] = value, c.overridden.insert(key);
+  // A light's own setting that its own settings leave unread would do nothing (tech::unread_param): refused,
+  // named in the scene; not under a --technique that replaces them. The frame's overrides are checked across
+  // all lights (frame.cpp).
+  if (!o.technique || *o.technique == s.technique) {
+    tech::ShadowConfig own;
+    own.technique = s.technique;
+    own.where = c.where;
+    for (const auto& [key, value] : s.params)
+      if (tech::find_param(s.technique, key)) own.params[key] = value;
+    try {
+      for (const auto& [key, value] : own.params)
+        if (const auto why = tech::unread_param(own, light.type, key)) throw FrameError(c.where + key + ": " + *why);
+    } catch (const tech::TechniqueError& e) {
+      throw FrameError(e.what());
+    }
+  }
   if (info.reads_filter) {
     try {
       const tech::Params p(c);

@@ -151,8 +151,11 @@ scenes::Scene leaf_scene(const fs::path& texture, scenes::AlphaMode mode, tech::
   // The filterable maps unblurred and without mips: their blur moves a hard edge by up to its radius, whatever
   // the caster, and so does a coarser level where a pixel covers several texels of the 2048² map (ESM's edge
   // moves towards the shadow).
-  if (tech::find_param(technique, "blur_radius")) light.shadow.params["blur_radius"] = 0.0;
-  if (tech::find_param(technique, "moment_mips")) light.shadow.params["moment_mips"] = std::string("none");
+  // (Cascades and the cube take these keys for their `moments` kind, which is none here: there they would do
+  // nothing, which is refused.)
+  const bool filterable = tech::find_param(technique, "blur_radius") && !tech::find_param(technique, "moments");
+  if (filterable) light.shadow.params["blur_radius"] = 0.0;
+  if (filterable) light.shadow.params["moment_mips"] = std::string("none");
   s.lights = {light};
   return s;
 }

@@ -10,6 +10,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/projective_outline_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/offset_blur_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/fade_table_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/param_use_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_map_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_agreement_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/shading/techniques/omni_density_test.cpp
