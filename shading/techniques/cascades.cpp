@@ -252,6 +252,9 @@ std::unique_ptr<LightShadow> plan_cascades(const LightDesc& light, const ShadowC
   s.visible = p.text("view_range") == "visible";
   s.lispsm = p.text("cascade_warp") == "lispsm";
   if (s.visible && !in.visible) throw TechniqueError(p.where("view_range") + ": visible needs the camera's depth pre-pass");
+  if (s.stabilize && s.visible)
+    throw TechniqueError(p.where("stabilize") + ": a visible view range (view_range = visible) follows what the "
+                                                "camera sees from frame to frame and cannot be stabilised");
   if (s.stabilize && s.lispsm)
     throw TechniqueError(p.where("stabilize") + ": a LiSPSM warp (cascade_warp = lispsm) changes with every view "
                                                 "and cannot be stabilised");

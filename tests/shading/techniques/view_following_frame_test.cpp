@@ -127,6 +127,9 @@ TEST(ViewFollowing, RefusesWhatCannotWork) {
   // Given as an override (the command line's options): named as the override's field, which the CLI shows as
   // its option.
   EXPECT_EQ(frame_error("duel", o).rfind("params.stabilize: ", 0), 0u) << frame_error("duel", o);
+  o.params["cascade_warp"] = std::string("none");
+  o.params["view_range"] = std::string("visible");  // a range that follows the camera's view cannot stay still
+  EXPECT_EQ(frame_error("duel", o).rfind("params.stabilize: a visible view range", 0), 0u) << frame_error("duel", o);
   o.params.clear();
   o.params["cascades"] = 5.0;
   EXPECT_NE(frame_error("duel", o).find("cascades"), std::string::npos);
