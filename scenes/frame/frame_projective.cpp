@@ -88,8 +88,10 @@ tech::ProjectiveSettings resolve_projective(const tech::ShadowConfig& c) {
     p.blur_offset = float(params.number("blur_offset"));
     p.fade_start = float(params.number("fade_start"));
     p.fade_end = float(params.number("fade_end"));
-    if (params.given("fade_end") && p.fade_end <= p.fade_start)
-      throw tech::TechniqueError(params.where("fade_end") + ": must be greater than fade_start");
+    if (params.given("fade_end") && p.fade_end != 0.0f && p.fade_end <= p.fade_start)
+      throw tech::TechniqueError(params.where("fade_end") + ": must be greater than fade_start (or 0: never fades)");
+    if (params.given("fade_start") && p.fade_end == 0.0f)
+      throw tech::TechniqueError(params.where("fade_start") + ": has no effect without a fade_end (0: never fades)");
     p.fade_lookup = *tech::parse_fade_lookup(params.text("fade_lookup"));
     if (p.fade_lookup == tech::FadeLookup::texture && !(p.fade_end > p.fade_start))
       throw tech::TechniqueError(params.where("fade_lookup") +
@@ -104,6 +106,8 @@ tech::ProjectiveSettings resolve_projective(const tech::ShadowConfig& c) {
     if (params.given("blur_offset") && p.blur_passes == 0)
       throw tech::TechniqueError(params.where("blur_offset") + ": has no effect unless blur_passes is above 0");
     p.max_textures = int(params.number("max_textures"));
+    if (params.given("max_textures") && p.mode != tech::ProjectiveMode::single_pass)
+      throw tech::TechniqueError(params.where("max_textures") + ": has no effect unless projective_mode is single-pass");
     p.decimate = params.flag("decimate");
     p.caster_reach = float(params.number("caster_reach"));
   } catch (const tech::TechniqueError& e) {
@@ -190,7 +194,16 @@ ProjectiveFrame prepare_projective(const scenes::Scene& scene, std::span<const P
     const scenes::Light& light = scene.lights[li];
     const tech::ProjectiveSettings s = resolve_projective(pl.config);
     pf.stats.active = true;
-    if (first) pf.mode = s.mode, pf.max_textures = s.max_textures, first = false;
+    // The mode and the textures per draw hold for every receiver of the frame: lights that ask for others are
+    // refused rather than overruled by the first.
+    if (first) {
+      pf.mode = s.mode, pf.max_textures = s.max_textures, first = false;
+    } else if (s.mode != pf.mode || s.max_textures != pf.max_textures) {
+      const tech::Params p(pl.config);
+      throw FrameError(p.where(s.mode != pf.mode ? "projective_mode" : "max_textures") +
+                       ": differs from the first projective light's (one mode and one count of textures per draw "
+                       "serve the whole frame)");
+    }
     const tech::ProjectiveLight projector = projector_of(light);
     // One fade texture per light, shared by its casters' readers.
     const shading::Texture2D fade_table = s.fade_lookup == tech::FadeLookup::texture && s.fade_end > s.fade_start

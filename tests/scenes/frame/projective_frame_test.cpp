@@ -312,7 +312,7 @@ TEST(ProjectiveFrame, BadParamsNameTheirKey) {
   expect_bad("caster_shade", 2.0, "lights[0].shadow.params.caster_shade: ");
   expect_bad("caster_shade", std::string("dark"), "lights[0].shadow.params.caster_shade: ");
   expect_bad("lod_bias", -1.0, "lights[0].shadow.params.lod_bias: ");
-  expect_bad("fade_end", 0.0, "lights[0].shadow.params.fade_end: ");
+  expect_bad("fade_end", -1.0, "lights[0].shadow.params.fade_end: ");
   expect_bad("max_textures", 2.5, "lights[0].shadow.params.max_textures: ");
   expect_bad("projective_mode", std::string("twice"), "lights[0].shadow.params.projective_mode: ");
   expect_bad("decimate", 1.0, "lights[0].shadow.params.decimate: ");
@@ -328,6 +328,26 @@ TEST(ProjectiveFrame, BadParamsNameTheirKey) {
   // Settings that would do nothing: a table without the texture lookup, an offset without passes.
   expect_bad("fade_table", std::string("1,1"), "lights[0].shadow.params.fade_table: ");
   expect_bad("blur_offset", 0.5, "lights[0].shadow.params.blur_offset: ");
+  expect_bad("fade_start", 1.0, "lights[0].shadow.params.fade_start: ");  // no fade_end: it never fades
+  expect_bad("max_textures", 2.0, "lights[0].shadow.params.max_textures: ");  // multipass applies one at a time
+  {  // fade_end 0, the default written out, means no fade, as left out
+    scenes::Scene written = scene_from(kTwoFloors);
+    written.lights[0].shadow.params["fade_end"] = 0.0;
+    EXPECT_EQ(max_difference(frame::render_frame(written, small(), r).color,
+                             frame::render_frame(scene_from(kTwoFloors), small(), r).color),
+              0);
+  }
+  {  // one mode serves the whole frame: a second projective light asking for another is refused, not overruled
+    scenes::Scene two = scene_from(kTwoFloors);
+    two.lights.push_back(two.lights[0]);
+    two.lights[1].shadow.params["projective_mode"] = std::string("single-pass");
+    try {
+      frame::render_frame(two, small(), r);
+      ADD_FAILURE() << "two modes accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("lights[1].shadow.params.projective_mode: differs", 0), 0u) << e.what();
+    }
+  }
   scenes::Scene scene = scene_from(kTwoFloors);
   frame::FrameConfig o = small();
   o.params["projective_mode"] = std::string("sometimes");
