@@ -254,9 +254,12 @@ int run_render(const RenderArgs& top) {
   }
   outputs.commit();
   if (top.json) {
+    nlohmann::json job_scenes = nlohmann::json::array();  // the whole run's, so that shards of two runs differ
+    for (const auto& job : jobs) job_scenes.push_back(job.second.scene);
     print_json({{"command", "render"},
                 {"batch", top.batch.empty() ? nlohmann::json(nullptr) : nlohmann::json(top.batch)},
                 {"jobs_total", jobs.size()},
+                {"job_scenes", job_scenes},
                 {"shard", {{"index", shard.index}, {"count", shard.count}}},
                 {"jobs", done},
                 {"summary", {{"jobs", done.size()}, {"frames", frames}, {"wall_ms", watch.ms()}}}});

@@ -31,6 +31,7 @@ struct MergeArgs {
 struct ShardDoc {
   nlohmann::json doc;
   nlohmann::json batch;  // the batch file's name, or null for scene arguments
+  nlohmann::json job_scenes;  // every job's scene, in batch order
   uint32_t jobs_total = 0, index = 0, count = 0;
   std::vector<nlohmann::json> jobs;
   std::vector<uint32_t> job_index;
@@ -55,6 +56,12 @@ ShardDoc read_doc(const std::string& file) {
   if (!batch.value().is_null()) batch.string();
   d.batch = batch.value();
   d.jobs_total = root.member("jobs_total").integer(0, kMost);
+  const std::vector<scenes::JsonIn> scenes_of_jobs = root.member("job_scenes").items();
+  if (scenes_of_jobs.size() != d.jobs_total)
+    root.fail_at("job_scenes", std::to_string(scenes_of_jobs.size()) + " scenes for " + std::to_string(d.jobs_total) +
+                                   " jobs");
+  for (const scenes::JsonIn& scene : scenes_of_jobs) scene.string();
+  d.job_scenes = root.member("job_scenes").value();
   const scenes::JsonIn shard = root.member("shard");
   d.count = shard.member("count").integer(1, kMost);
   d.index = shard.member("index").integer(0, d.count - 1);
@@ -82,8 +89,9 @@ int run_merge(const MergeArgs& a) {
   double wall_ms = 0;
   for (size_t i = 0; i < docs.size(); ++i) {
     const ShardDoc& d = docs[i];
-    if (d.batch != first.batch || d.jobs_total != first.jobs_total || d.count != count)
-      throw CliError(a.shards[i], "belongs to another run than " + a.shards[0] + " (batch, jobs or shard count differ)");
+    if (d.batch != first.batch || d.job_scenes != first.job_scenes || d.count != count)
+      throw CliError(a.shards[i], "belongs to another run than " + a.shards[0] +
+                                      " (batch, its jobs' scenes or shard count differ)");
     if (seen[d.index]) throw CliError(a.shards[i], "repeats shard " + std::to_string(d.index));
     seen[d.index] = true;
     for (size_t k = 0; k < d.jobs.size(); ++k) {
@@ -109,6 +117,7 @@ int run_merge(const MergeArgs& a) {
   nlohmann::json merged = {{"command", "render"},
                            {"batch", first.batch},
                            {"jobs_total", first.jobs_total},
+                           {"job_scenes", first.job_scenes},
                            {"shard", {{"index", 0}, {"count", 1}}},
                            {"merged_from", count},
                            {"jobs", merged_jobs},

@@ -283,6 +283,8 @@ TEST_F(CliScripting, BatchesAndShards) {
   damaged("no_frames.json", [](auto& d) { d["jobs"][1].erase("frames"); });
   testsupport::expect_bad_run(dir, "render-merge no_frames.json s1.json", "no_frames.json: jobs[1]");
   damaged("foreign_job.json", [](auto& d) { d["jobs"][0]["index"] = 1; });  // shard 0/2 runs jobs 0 and 2
+  damaged("other_run.json", [](auto& d) { d["job_scenes"][3] = "duel"; });  // a run whose last job is another scene
+  testsupport::expect_bad_run(dir, "render-merge other_run.json s1.json", "s1.json");
   testsupport::expect_bad_run(dir, "render-merge foreign_job.json s1.json", "foreign_job.json: jobs[0].index");
   // Options beside --batch would apply to none of its lines: refused, not ignored.
   testsupport::expect_bad_run(dir, "render --batch jobs.txt --threads 2", "--threads");
