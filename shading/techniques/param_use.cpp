@@ -52,6 +52,10 @@ std::optional<std::string> unread_param(const ShadowConfig& c, LightType light, 
       if (one_of(key, {"fit_cutoff", "fit_smoothing"}) && p.text("fit") != "tutorial")
         return "applies to fit = tutorial only (fit is " + p.text("fit") + ")";
       return std::nullopt;
+    case Technique::paraboloid:
+      if (key == "split_plane" && light == LightType::hemispherical)
+        return std::string("divides a point light's two paraboloids; a hemispherical light's one faces its direction");
+      return std::nullopt;
     default: return std::nullopt;
   }
 }

@@ -21,7 +21,8 @@ SHADOWLAB_ISA_BEGIN
 //     kinds; min_variance with vsm; evsm_positive and evsm_min_variance with evsm2 and evsm4; evsm_negative with
 //     evsm4);
 //   shadowmap: fit, fit_cutoff and fit_smoothing size a directional light's box (a spot's frustum is its cone),
-//     and fit_cutoff and fit_smoothing belong to fit = tutorial.
+//     and fit_cutoff and fit_smoothing belong to fit = tutorial;
+//   paraboloid: split_plane divides a point light's two paraboloids (a hemispherical light has one).
 std::optional<std::string> unread_param(const ShadowConfig& c, LightType light, std::string_view key);
 
 SHADOWLAB_ISA_END

@@ -130,7 +130,9 @@ TEST(OmniFrame, RejectsBadOptions) {
   EXPECT_NE(message(a).find("params.split_plane"), std::string::npos);
   a.params["split_plane"] = std::string("w");
   EXPECT_NE(message(a).find("params.split_plane"), std::string::npos);
-  a.params["split_plane"] = std::string("1,0.5,0");
+  a.params["split_plane"] = std::string("1,0.5,0");  // a plane, but the pyramid scene's lamp is hemispherical
+  EXPECT_EQ(message(a).rfind("params.split_plane: divides a point light's two paraboloids", 0), 0u) << message(a);
+  a.params.erase("split_plane");
   EXPECT_EQ(message(a), "");
   frame::FrameConfig b = o;
   b.technique = *shading::tech::parse_technique("pyramid");

@@ -71,6 +71,12 @@ TEST(ParamUse, TheClassicFitIsForDirectionalLights) {
   EXPECT_TRUE(read(config(tech::Technique::shadowmap), LightType::directional, "fit"));
 }
 
+TEST(ParamUse, TheSplitPlaneIsAPointLights) {
+  const tech::ShadowConfig c = config(tech::Technique::paraboloid, {{"split_plane", std::string("y")}});
+  EXPECT_TRUE(read(c, LightType::point, "split_plane"));
+  EXPECT_FALSE(read(c, LightType::hemispherical, "split_plane"));
+}
+
 // A light's own unread key is refused where the scene gave it; an override, when no light of the frame reads it.
 TEST(ParamUse, FramesRefuseSettingsThatDoNothing) {
   scenes::Light spot = scenes::builtin_scene("tutorial-spot").lights.at(0);
