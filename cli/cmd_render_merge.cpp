@@ -29,7 +29,6 @@ struct MergeArgs {
 // One shard's document, its fields checked where they are read: a missing or mistyped one is named with the file
 // (`a.json: shard.count: expected a whole number ...`).
 struct ShardDoc {
-  nlohmann::json doc;
   nlohmann::json batch;  // the batch file's name, or null for scene arguments
   nlohmann::json job_scenes;  // every job's scene, in batch order
   uint32_t jobs_total = 0, index = 0, count = 0;
@@ -47,21 +46,21 @@ ShardDoc read_doc(const std::string& file) {
   if (!std::filesystem::is_regular_file(file, ec) || !in) throw CliError(file, "cannot be read (no such file?)");
   std::stringstream text;
   text << in.rdbuf();
+  const nlohmann::json doc = nlohmann::json::parse(text.str(), nullptr, false);
+  if (doc.is_discarded() || !doc.is_object()) throw CliError(file, "is not a JSON document");
+  if (doc.value("command", "") != "render") throw CliError(file, "is not the output of `shadowlab render --json`");
   ShardDoc d;
-  d.doc = nlohmann::json::parse(text.str(), nullptr, false);
-  if (d.doc.is_discarded() || !d.doc.is_object()) throw CliError(file, "is not a JSON document");
-  if (d.doc.value("command", "") != "render") throw CliError(file, "is not the output of `shadowlab render --json`");
-  const scenes::JsonIn root(d.doc, "", file);
+  const scenes::JsonIn root(doc, "", file);
   const scenes::JsonIn batch = root.member("batch");
   if (!batch.value().is_null()) batch.string();
   d.batch = batch.value();
   d.jobs_total = root.member("jobs_total").integer(0, kMost);
-  const std::vector<scenes::JsonIn> scenes_of_jobs = root.member("job_scenes").items();
+  const scenes::JsonIn job_scenes = root.member("job_scenes");
+  const std::vector<scenes::JsonIn> scenes_of_jobs = job_scenes.items();
   if (scenes_of_jobs.size() != d.jobs_total)
-    root.fail_at("job_scenes", std::to_string(scenes_of_jobs.size()) + " scenes for " + std::to_string(d.jobs_total) +
-                                   " jobs");
+    job_scenes.fail(std::to_string(scenes_of_jobs.size()) + " scenes for " + std::to_string(d.jobs_total) + " jobs");
   for (const scenes::JsonIn& scene : scenes_of_jobs) scene.string();
-  d.job_scenes = root.member("job_scenes").value();
+  d.job_scenes = job_scenes.value();
   const scenes::JsonIn shard = root.member("shard");
   d.count = shard.member("count").integer(1, kMost);
   d.index = shard.member("index").integer(0, d.count - 1);

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "shading/techniques/param_use.h"
 #include "shading/techniques/tutorial_fit.h"
 #include "raster/simd/isa.h"
 
@@ -145,9 +146,9 @@ std::unique_ptr<LightShadow> plan_classic(const LightDesc& light, const ShadowCo
   ClassicFit fit{in.receivers, in.casters, std::nullopt};
   const Params p(c);
   const std::string how = p.text("fit");
-  for (const char* key : {"fit_cutoff", "fit_smoothing"})
+  for (const char* key : {"fit_cutoff", "fit_smoothing"})  // the condition and its words: param_use.h
     if (how != "tutorial" && c.params.count(key))
-      throw TechniqueError(p.where(key) + ": applies to fit = tutorial only (fit is " + how + ")");
+      throw TechniqueError(p.where(key) + ": " + *unread_param(c, light.type, key));
   if (how == "fixed") fit.fixed = fixed_directional(l.direction, glm::vec3(0.0f), {10.0f, 10.0f}, -10.0f, 20.0f);
   if (how == "tutorial" && l.kind == LightKind::directional) fit.fixed = tutorial_fit(l.direction, p, in);
   return std::make_unique<ClassicShadow>(l, s, fit);

@@ -8,6 +8,7 @@
 
 #include "shading/techniques/cube_pcss.h"
 #include "shading/techniques/omni_read.h"
+#include "shading/techniques/param_use.h"
 #include "raster/simd/isa.h"
 
 namespace shading::tech {
@@ -177,7 +178,7 @@ std::unique_ptr<LightShadow> plan_omni(OmniKind kind, const LightDesc& light, co
                              " is not used with soft_shadows = pcss (PCSS filters with its own kernel)");
       pcss = CubePcss{float(p.number("light_radius")), s.near_plane};
     } else if (p.given("light_radius")) {
-      throw TechniqueError(p.where("light_radius") + ": the light's size is read by soft_shadows = pcss only");
+      throw TechniqueError(p.where("light_radius") + ": " + *unread_param(c, light.type, "light_radius"));
     }
   }
   if (kind == OmniKind::paraboloid) {

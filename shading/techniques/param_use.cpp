@@ -44,7 +44,7 @@ std::optional<std::string> unread_param(const ShadowConfig& c, LightType light, 
     case Technique::cascades:
     case Technique::cube:
       if (one_of(key, {"light_angle", "light_radius"}) && p.text("soft_shadows") != "pcss")
-        return std::string("the light's size is read with soft_shadows = pcss only");
+        return std::string("the light's size is read by soft_shadows = pcss only");
       return unread_moment_key(p, key);
     case Technique::shadowmap:
       if (one_of(key, {"fit", "fit_cutoff", "fit_smoothing"}) && light != LightType::directional)
