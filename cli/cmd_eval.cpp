@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "cli/cli_common.h"
 #include "cli/eval_report.h"
 #include "cli/light_choice.h"
+#include "cli/shadow_options.h"
 #include "raster/renderer.h"
 #include "scenes/frame/frame.h"
 #include "scenes/frame/frame_lights.h"
@@ -48,6 +50,7 @@ struct EvalArgs {
   std::string light;               // --light NAME|INDEX: score that light alone
   float shimmer_pixels = 0.0f;     // --shimmer-pixels: camera slide for the shimmer columns (0: not measured)
   float shimmer_degrees = 0.0f;    // --shimmer-degrees: light turn for the shimmer columns (0: not measured)
+  ShadowOverrides shadow;          // settings for the whole sweep: bias values, Poisson, technique parameters
 };
 
 // One point of the sweep; an unset field keeps each light's own setting.
@@ -117,8 +120,17 @@ CliError as_cli_error(const frame::FrameError& e, const std::string& scene, std:
   const std::string field = light_field(what.substr(0, colon), chosen_light);
   std::string where = field;
   if (const auto it = kOptions.find(field); it != kOptions.end()) where = it->second;
+  else if (auto option = shadow_option_for_field(field)) where = *option;
   else if (std::error_code ec; std::filesystem::is_regular_file(scene, ec)) where = scene + ": " + field;
   return CliError(where, what.substr(colon + 2));
+}
+
+// The frame a combination renders: the sweep's base, the combination's point, the command line's settings.
+frame::FrameConfig combo_config(const frame::FrameConfig& base, const Combination& c, const ShadowOverrides& shadow) {
+  frame::FrameConfig config = base;
+  apply_shadow_overrides(shadow, config);
+  config.technique = c.technique, config.filter = c.filter, config.bias = c.bias, config.map_size = c.map_size;
+  return config;
 }
 
 // One row: a combination's score for one light.
@@ -164,6 +176,7 @@ int run_eval(const EvalArgs& a) {
                                                   scenes::bias_mode_names());
   const auto sizes = parse_sizes(a.sizes);
   check_threads(a.threads);
+  check_shadow_overrides(a.shadow);
   if (a.near_radius < 0 || a.near_radius > 64) throw CliError("--near-radius", "expected 0..64 pixels");
   if (!std::isfinite(a.shimmer_pixels) || std::fabs(a.shimmer_pixels) > 16.0f)
     throw CliError("--shimmer-pixels", "expected a slide of at most 16 pixels");
@@ -205,12 +218,27 @@ int run_eval(const EvalArgs& a) {
 
   try {
     // Every combination's lights resolved (technique for the light type, map size, parameters) before anything
-    // renders, so a sweep with a bad combination fails before the first.
-    for (const Combination& c : combos) {
-      frame::FrameConfig config = base;
-      config.technique = c.technique, config.filter = c.filter, config.bias = c.bias, config.map_size = c.map_size;
-      for (size_t i = 0; i < scene.lights.size(); ++i) frame::resolve_light(scene.lights[i], i, config);
+    // renders, so a sweep with a bad combination fails before the first. A technique parameter of the command
+    // line goes to the combinations whose lights read it (--esm-c beside --techniques shadowmap,esm: the esm
+    // ones); one that no combination reads would do nothing, and is refused with the first combination's reason.
+    std::vector<std::map<std::string, tech::ParamValue>> combo_params(combos.size());
+    std::map<std::string, std::string> unread;  // key -> why the first combination leaves it unread
+    std::set<std::string> read;
+    for (size_t k = 0; k < combos.size(); ++k) {
+      frame::FrameConfig config = combo_config(base, combos[k], a.shadow);
+      std::vector<frame::ResolvedLight> lights;
+      for (size_t i = 0; i < scene.lights.size(); ++i) lights.push_back(frame::resolve_light(scene.lights[i], i, config));
+      for (const auto& [key, value] : a.shadow.params) {
+        if (auto why = frame::unread_override(lights, key, value)) unread.emplace(key, *why);
+        else read.insert(key), combo_params[k].emplace(key, value);
+      }
     }
+    for (const auto& [key, why] : unread)
+      if (!read.count(key)) {
+        if (combos.size() == 1) throw frame::FrameError(why);
+        const std::string field = "params." + key + ": ";  // why starts with it
+        throw frame::FrameError(field + "no combination of the sweep reads it (the first: " + why.substr(field.size()) + ")");
+      }
 
     Progress progress;
     progress.update("reference: casting rays");
@@ -238,8 +266,8 @@ int run_eval(const EvalArgs& a) {
       if (k % shard.count != shard.index) continue;
       const Combination& c = combos[k];
       progress.update("combination " + std::to_string(k + 1) + "/" + std::to_string(combos.size()) + ": " + c.label());
-      frame::FrameConfig config = base;
-      config.technique = c.technique, config.filter = c.filter, config.bias = c.bias, config.map_size = c.map_size;
+      frame::FrameConfig config = combo_config(base, c, a.shadow);
+      config.params = combo_params[k];
       config.aliasing = true;  // measured where the technique has a measure (frame/aliasing.h)
       const reference::ScoredFrame sf = reference::score_config(scene, config, renderer, ref, options, &textures);
       std::vector<std::vector<reference::LightShimmer>> shimmers;
@@ -284,6 +312,7 @@ int run_eval(const EvalArgs& a) {
           {"labels", labels},
           {"light", chosen_light ? nlohmann::json(*chosen_light) : nlohmann::json()},
           {"cull_front", a.cull_front ? nlohmann::json(*a.cull_front) : nlohmann::json()},
+          {"settings", shadow_overrides_json(a.shadow)},
           {"shard", shard.index},
           {"shards", shard.count}}},
         {"shimmer", {{"camera_pixels", a.shimmer_pixels}, {"light_degrees", a.shimmer_degrees}}},
@@ -322,6 +351,8 @@ Command add_eval_command(CLI::App& parent) {
   app->add_option("--shard", args->shard,
                   "I/N: run only the combinations K with K mod N = I (0 <= I < N); merge the shards with eval-merge");
   app->add_option("--out", args->out, "Output directory for eval.csv, eval.json and the error maps (default eval)");
+  // The shadow settings render takes, the same for every combination (each light's own where not given).
+  add_shadow_options(*app, args->shadow);
   return {app, [args] { return run_eval(*args); }};
 }
 

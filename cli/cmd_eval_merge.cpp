@@ -120,7 +120,7 @@ int run_merge(const MergeArgs& a) {
         throw CliError(s.file, std::string("its reference's \"") + key + "\" differs from the first shard's");
     if (sweep_of(r) != sweep_of(first))
       throw CliError(s.file, "belongs to another sweep than the first shard (its combinations, light, cull-front "
-                             "override or shard count differ)");
+                             "override, settings or shard count differ)");
     if (seen[s.shard]) throw CliError(s.file, "repeats shard " + std::to_string(s.shard));
     seen[s.shard] = true;
     for (const auto& row : r["results"]) results.push_back(row);

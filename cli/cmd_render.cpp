@@ -117,18 +117,9 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   if (!a.technique.empty()) config.technique = scenes::parse_technique(a.technique);
   if (!a.filter.empty()) config.filter = scenes::parse_filter(a.filter);
   if (!a.bias.empty()) config.bias = scenes::parse_bias_mode(a.bias);
-  if (!a.depth_format.empty()) config.depth_format = scenes::parse_depth_format(a.depth_format);
   if (a.shadow_size) config.map_size = int(*a.shadow_size);
   config.cull_front = a.cull_front;
-  if (a.poisson_taps) config.poisson_taps = *a.poisson_taps;
-  config.poisson_spread = a.poisson_spread;
-  config.bias_constant = a.bias_constant;
-  config.bias_slope = a.bias_slope;
-  config.bias_slope_max = a.bias_slope_max;
-  config.offset_factor = a.offset_factor;
-  config.offset_units = a.offset_units;
-  config.normal_offset = a.normal_offset;
-  config.params = a.params;
+  apply_shadow_overrides(a.shadow, config);
   config.export_maps = !a.maps.empty();  // projective maps become EXR records only when written
   config.aliasing = !a.aliasing.empty();
   config.surface_record = !aovs.empty();

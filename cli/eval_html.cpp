@@ -90,6 +90,13 @@ std::string eval_html(const nlohmann::json& report, const ContactSheets& sheets)
     << cell(report.at("scoring").at("shadow_below")) << "; near = within "
     << report.at("scoring").at("near_radius_pixels")
     << " pixels of an exact shadow boundary or a crease. Error maps: false-shadowed red, false-lit blue.</p>\n";
+  if (const auto& sweep = report.at("sweep"); sweep.contains("settings") && !sweep.at("settings").empty()) {
+    h << "<p>Settings of every combination:";
+    for (const auto& [option, value] : sweep.at("settings").items())
+      h << " <code>--" << escape(option) << " " << escape(value.is_string() ? value.get<std::string>() : value.dump())
+        << "</code>";
+    h << "</p>\n";
+  }
   h << "<table id=\"results\"><thead><tr>";
   const std::span<const char* const> columns = eval_columns();
   for (const std::string c : columns) h << "<th>" << escape(c) << "</th>";

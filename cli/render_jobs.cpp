@@ -18,28 +18,6 @@ namespace cli {
 SHADOWLAB_ISA_BEGIN
 namespace {
 
-// Every technique parameter once (the filter parameters and each built technique's own), in table order.
-std::vector<const shading::tech::ParamSpec*> all_params() {
-  std::vector<const shading::tech::ParamSpec*> out;
-  auto add = [&](std::span<const shading::tech::ParamSpec> list) {
-    for (const auto& p : list) {
-      bool seen = false;
-      for (const auto* q : out) seen |= q->key == p.key;
-      if (!seen) out.push_back(&p);
-    }
-  };
-  add(shading::tech::kFilterParams);
-  for (const shading::tech::TechniqueInfo& t : shading::tech::kTechniques)
-    if (t.built) add(t.params);
-  return out;
-}
-
-
-// A float option that stays unset unless given (CLI11 checks that the text is a number).
-void add_value(CLI::App* app, const char* name, std::optional<float>& target, const char* help) {
-  app->add_option_function<float>(name, [&target](const float& v) { target = v; }, help);
-}
-
 // An override's name is checked against the scene module's table before anything is loaded.
 void check_name(const std::string& value, const std::string& option, const char* what, bool known,
                 std::span<const scenes::NamedEntry> table) {
@@ -57,19 +35,9 @@ std::string option_for_field(const std::string& field) {
       {"camera", "--camera"},
       {"technique", "--technique"},
       {"map_size", "--shadow-size"},
-      {"poisson_taps", "--poisson-taps"},
-      {"poisson_spread", "--poisson-spread"},
-      {"bias.constant", "--bias-constant"},
-      {"bias.slope", "--bias-slope"},
-      {"bias.slope_max", "--bias-slope-max"},
-      {"bias.offset_factor", "--offset-factor"},
-      {"bias.offset_units", "--offset-units"},
-      {"bias.normal_offset", "--normal-offset"},
   };
   if (const auto it = kFields.find(field); it != kFields.end()) return it->second;
-  if (field.rfind("params.", 0) == 0)
-    for (const auto* p : all_params())
-      if (field == "params." + std::string(p->key)) return std::string(p->option);
+  if (auto option = shadow_option_for_field(field)) return *option;
   return field;
 }
 
@@ -103,12 +71,9 @@ void check_job(const RenderArgs& a) {
              scenes::technique_names());
   check_name(a.filter, "--filter", "filter", scenes::parse_filter(a.filter).has_value(), scenes::filter_names());
   check_name(a.bias, "--bias", "bias mode", scenes::parse_bias_mode(a.bias).has_value(), scenes::bias_mode_names());
-  check_name(a.depth_format, "--depth-format", "depth format", scenes::parse_depth_format(a.depth_format).has_value(),
-             scenes::depth_format_names());
   if (!a.technique.empty() && !shading::tech::info(*scenes::parse_technique(a.technique)).built)
     throw CliError("--technique", "technique " + a.technique + " is not built yet");
-  if (a.poisson_taps && *a.poisson_taps != 4 && *a.poisson_taps != 16)
-    throw CliError("--poisson-taps", std::to_string(*a.poisson_taps) + " is not 4 or 16");
+  check_shadow_overrides(a.shadow);
   // The widest bounds any technique takes; each technique's own (16 and up for most, 1 for projective, less than
   // 16384 where maps share a target) are checked per light (vocabulary.h's map_size_problem).
   if (a.shadow_size && (*a.shadow_size < 1 || *a.shadow_size > 16384))
@@ -116,9 +81,6 @@ void check_job(const RenderArgs& a) {
                                         " is outside 1..16384 (16..16384 for every technique but projective)");
   check_threads(a.threads);
   if (a.frames < 1 || a.frames > 1000000) throw CliError("--frames", "expected 1 to 1000000 frames");
-  for (const shading::tech::ParamSpec* p : all_params())
-    if (const auto it = a.params.find(std::string(p->key)); it != a.params.end())
-      if (auto why = shading::tech::value_problem(*p, it->second)) throw CliError(std::string(p->option), *why);
   if (a.fps && !a.animate) throw CliError("--fps", "sets the frame rate of --animate, which is not given");
   if (a.animate) {
     if (a.fps && (!std::isfinite(*a.fps) || !(*a.fps > 0.0))) throw CliError("--fps", "expected a frame rate above 0");
@@ -271,40 +233,11 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
                   "Also measure each light's aliasing (pixels per shadow-map texel) and write its heat map here (.png)");
   app->add_flag_callback("--cull-front", [args] { args->cull_front = true; }, "Render only back faces into the maps");
   app->add_flag_callback("--no-cull-front", [args] { args->cull_front = false; }, "Render front faces into the maps");
-  app->add_option("--poisson-taps", args->poisson_taps, "Poisson filters: 4 or 16 taps");
-  RenderArgs& r = *args;
-  add_value(app, "--poisson-spread", r.poisson_spread, "Poisson disc radius in map texture coordinates (1/700)");
-  add_value(app, "--bias-constant", r.bias_constant, "constant bias: window depth subtracted (0.005)");
-  add_value(app, "--bias-slope", r.bias_slope, "slope bias: scale of tan(acos(N.L)) (0.005)");
-  add_value(app, "--bias-slope-max", r.bias_slope_max, "slope bias: upper clamp (0.01)");
-  add_value(app, "--offset-factor", r.offset_factor, "offset bias: glPolygonOffset factor (1.1)");
-  add_value(app, "--offset-units", r.offset_units, "offset bias: glPolygonOffset units (4)");
-  add_value(app, "--normal-offset", r.normal_offset, "normal bias: receiver moved along its normal, metres (0.02)");
   app->add_option("--maps", args->maps, "Also write every shadow map as DIR/<map name>.exr");
   app->add_option("--aov", args->aov,
                   "Per-pixel channels to write with --aov-out: position,normal,visibility,depth (default: all)");
   app->add_option("--aov-out", args->aov_out, "Write the per-pixel channels as one multi-channel EXR (aligned with --out)");
-  app->add_option("--depth-format", args->depth_format, "Depth format of every light's maps (see list)");
-  // The technique parameters (vocabulary.h): one option each, flags with a --no- form.
-  for (const shading::tech::ParamSpec* p : all_params()) {
-    const std::string key(p->key), option(p->option), help = std::string(p->help) + " (default " +
-                                                             std::string(p->fallback) + ")";
-    switch (p->kind) {
-      case shading::tech::ParamKind::flag:
-        app->add_flag_callback(option, [args, key] { args->params[key] = true; }, help);
-        app->add_flag_callback("--no-" + option.substr(2), [args, key] { args->params[key] = false; }, "");
-        break;
-      case shading::tech::ParamKind::number:
-      case shading::tech::ParamKind::integer:
-        app->add_option_function<double>(option, [args, key](const double& v) { args->params[key] = v; }, help);
-        break;
-      case shading::tech::ParamKind::choice:
-      case shading::tech::ParamKind::text:
-        app->add_option_function<std::string>(option, [args, key](const std::string& v) { args->params[key] = v; },
-                                              help);
-        break;
-    }
-  }
+  add_shadow_options(*app, args->shadow);
   app->add_flag("--animate", args->animate, "Animated built-in scenes (projective): frame K at time K / fps");
   app->add_option("--fps", args->fps, "Frame rate of --animate (default 24)");
   app->add_flag_callback("--ground", [args] { args->ground = true; },

@@ -1,5 +1,5 @@
-// A render job's arguments: RenderArgs, the render options that fill it (one per technique parameter, from the
-// vocabulary's ParamSpec lists), the checks a job passes before anything renders, and the jobs of a batch file
+// A render job's arguments: RenderArgs, the render options that fill it (the shadow settings' from
+// shadow_options.h), the checks a job passes before anything renders, and the jobs of a batch file
 // or a command line given as words. cmd_render.cpp renders them.
 #pragma once
 #include <functional>
@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/look_options.h"
+#include "cli/shadow_options.h"
 #include "scenes/frame/surface_record.h"
 #include "shading/techniques/vocabulary.h"
 #include "raster/simd/isa.h"
@@ -23,7 +24,7 @@ SHADOWLAB_ISA_BEGIN
 struct RenderArgs {
   std::vector<std::string> scenes;
   std::string scene;  // the one scene of a job
-  std::string technique, filter, bias, depth_format, size = "1280x720", maps, out = "frame.png", aliasing;
+  std::string technique, filter, bias, size = "1280x720", maps, out = "frame.png", aliasing;
   std::string aov, aov_out;  // --aov position,normal,visibility,depth  --aov-out FILE.exr
   std::optional<long long> shadow_size;  // given or not (a plain value: jobs outlive the parser that filled them)
   std::string shadow_size_text;         // as given, for messages
@@ -31,14 +32,9 @@ struct RenderArgs {
   int frames = 1;
   bool stats = false;
   std::optional<bool> cull_front;  // --cull-front / --no-cull-front
-  std::optional<int> poisson_taps;  // left out: the light's setting
   bool animate = false;            // --animate: rebuild an animated built-in scene per frame
   std::optional<double> fps;        // --fps (with --animate; default 24): frame K is at time K / fps
-  // Value overrides, set only when given on the command line.
-  std::optional<float> poisson_spread, bias_constant, bias_slope, bias_slope_max, offset_factor, offset_units,
-      normal_offset;
-  // Technique parameters by key (vocabulary.h), set only when given.
-  std::map<std::string, shading::tech::ParamValue> params;
+  ShadowOverrides shadow;      // depth format, Poisson, bias values, technique parameters (shadow_options.h)
   bool ground = true;         // --ground / --no-ground: a plane under a bare glTF model (scenes/stage.h)
   std::string sun, up = "y";  // --sun AZ,EL for a bare model; --up y|z: the model's up axis
   std::string camera;         // --camera NAME|INDEX|orbit:AZ,EL[,DIST]

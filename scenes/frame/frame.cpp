@@ -60,34 +60,6 @@ struct FrameCasters {
   tech::CasterGeometry geometry() const { return {soup.opaque.positions, soup.opaque.indices, masked}; }
 };
 
-// The frame's technique parameters must each reach some light: one that no light's technique takes, or that
-// every light taking it leaves unread with its settings (tech::unread_param), would do nothing.
-void check_params_used(const FrameConfig& config, const std::vector<ResolvedLight>& lights) {
-  for (const auto& [key, value] : config.params) {
-    bool used = false;
-    std::optional<std::string> unread;  // why the first light that takes it does not read it
-    for (const ResolvedLight& r : lights)
-      if (const tech::ParamSpec* spec = tech::find_param(r.config.technique, key)) {
-        if (auto why = tech::value_problem(*spec, value)) throw FrameError("params." + key + ": " + *why);
-        std::optional<std::string> why;
-        try {
-          why = tech::unread_param(r.config, r.desc.type, key);
-        } catch (const tech::TechniqueError& e) {
-          throw FrameError(e.what());
-        }
-        if (!why) used = true;
-        else if (!unread) unread = why;
-      }
-    if (used) continue;
-    if (unread) throw FrameError("params." + key + ": " + *unread);
-    std::string takers;
-    for (const tech::TechniqueInfo& t : tech::kTechniques)
-      if (t.built && tech::find_param(t.id, key)) takers += (takers.empty() ? "" : ", ") + std::string(t.name);
-    throw FrameError("params." + key + ": no light of this frame uses a technique that takes it" +
-                     (takers.empty() ? std::string(" (no technique does)") : " (taken by: " + takers + ")"));
-  }
-}
-
 // The camera as the view-following techniques see it.
 tech::CameraView camera_view(const scenes::Camera& camera, float aspect) {
   tech::CameraView v;
@@ -167,7 +139,8 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
     resolved.push_back(resolve_light(scene.lights[i], i, config));
     resolved.back().light.ambient = ambient_illuminance(scene.lights[i], bounds);
   }
-  check_params_used(config, resolved);
+  for (const auto& [key, value] : config.params)
+    if (auto why = unread_override(resolved, key, value)) throw FrameError(*why);
 
   // ---- Material textures: the caller's (loaded once per scene), or loaded here for this frame alone; a missing
   // or unreadable file fails the frame before any work.

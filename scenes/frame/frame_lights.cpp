@@ -188,5 +188,29 @@ ResolvedLight resolve_light(const scenes::Light& light, size_t index, const Fram
   return r;
 }
 
+
+std::optional<std::string> unread_override(const std::vector<ResolvedLight>& lights, const std::string& key,
+                                           const tech::ParamValue& value) {
+  std::optional<std::string> unread;  // why the first light that takes it does not read it
+  for (const ResolvedLight& r : lights)
+    if (const tech::ParamSpec* spec = tech::find_param(r.config.technique, key)) {
+      if (auto why = tech::value_problem(*spec, value)) throw FrameError("params." + key + ": " + *why);
+      std::optional<std::string> why;
+      try {
+        why = tech::unread_param(r.config, r.desc.type, key);
+      } catch (const tech::TechniqueError& e) {
+        throw FrameError(e.what());
+      }
+      if (!why) return std::nullopt;
+      if (!unread) unread = why;
+    }
+  if (unread) return "params." + key + ": " + *unread;
+  std::string takers;
+  for (const tech::TechniqueInfo& t : tech::kTechniques)
+    if (t.built && tech::find_param(t.id, key)) takers += (takers.empty() ? "" : ", ") + std::string(t.name);
+  return "params." + key + ": no light of this frame uses a technique that takes it" +
+         (takers.empty() ? std::string(" (no technique does)") : " (taken by: " + takers + ")");
+}
+
 SHADOWLAB_ISA_END
 }  // namespace frame

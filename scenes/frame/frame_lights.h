@@ -2,7 +2,9 @@
 // the light as the techniques see it (LightDesc) and its merged, checked shadow settings (ShadowConfig).
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "scenes/frame/frame.h"
 #include "scenes/scene_queries.h"
@@ -33,6 +35,12 @@ float ambient_illuminance(const scenes::Light& light, const scenes::Aabb& bounds
 // size, tap count or bias value out of range, a technique parameter of the wrong kind. `index` is the light's
 // place in the scene, for messages naming lights[index].
 ResolvedLight resolve_light(const scenes::Light& light, size_t index, const FrameConfig& config);
+
+// Why the frame's technique parameter `key` would do nothing with these lights, as a FrameError's text
+// (`params.esm_c: ...`): no light's technique takes it, or every light taking it leaves it unread with its
+// settings (tech::unread_param). Nothing when some light reads it. Throws FrameError for a value its spec refuses.
+std::optional<std::string> unread_override(const std::vector<ResolvedLight>& lights, const std::string& key,
+                                           const tech::ParamValue& value);
 
 SHADOWLAB_ISA_END
 }  // namespace frame

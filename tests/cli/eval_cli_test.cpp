@@ -196,6 +196,51 @@ TEST_F(EvalCli, ShardsMergeIntoTheWholeSweep) {
   expect_bad("eval-merge s0 s1 foreign_row --out m2", "foreign_row/eval.json: results[0].combination", "m2");
 }
 
+// The shadow settings render takes apply to every combination of a sweep whose lights read them: --esm-c changes
+// the esm rows and leaves the classic map's rows as they were; a setting no combination reads is refused.
+TEST_F(EvalCli, SweepTakesShadowSettings) {
+  auto rows = [&](const std::string& extra, const std::string& out) {
+    const Outcome r = shadowlab(dir, "eval scene.json --techniques shadowmap,esm --biases constant --sizes 256 "
+                                     "--size 160x120 --out " + out + " " + extra);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(testsupport::slurp(dir / out / "eval.json"));
+  };
+  const nlohmann::json plain = rows("", "plain"), sharp = rows("--esm-c 20", "sharp"),
+                       biased = rows("--bias-constant 0.05", "biased");
+  ASSERT_EQ(plain.at("results").size(), 2u);
+  ASSERT_EQ(sharp.at("results").size(), 2u);
+  EXPECT_EQ(plain.at("sweep").at("settings"), nlohmann::json::object());
+  EXPECT_EQ(sharp.at("sweep").at("settings"), (nlohmann::json{{"esm-c", 20.0}}));
+  EXPECT_EQ(biased.at("sweep").at("settings"), (nlohmann::json{{"bias-constant", 0.05f}}));
+  auto errors = [](const nlohmann::json& row) { return row.at("false_lit_pixels").get<size_t>() + row.at("false_shadowed_pixels").get<size_t>(); };
+  const auto& classic = plain.at("results")[0], esm = plain.at("results")[1];
+  ASSERT_EQ(classic.at("technique"), "shadowmap");
+  ASSERT_EQ(esm.at("technique"), "esm");
+  EXPECT_NE(sharp.at("results")[1].at("mean_abs_error"), esm.at("mean_abs_error"));
+  EXPECT_EQ(errors(sharp.at("results")[0]), errors(classic));
+  EXPECT_EQ(sharp.at("results")[0].at("mean_abs_error"), classic.at("mean_abs_error"));
+  // A 256² map with the default constant bias has acne on the floor; ten times the bias removes most of it.
+  EXPECT_GT(classic.at("false_shadowed_pixels").get<size_t>(), 20u);
+  EXPECT_LT(biased.at("results")[0].at("false_shadowed_pixels").get<size_t>() * 4,
+            classic.at("false_shadowed_pixels").get<size_t>());
+
+  const std::string base = "eval scene.json --size 64x48 --out report ";
+  expect_bad(base + "--techniques shadowmap --esm-c 20", "--esm-c", "report");
+  const Outcome none = shadowlab(dir, base + "--techniques shadowmap,lispsm --esm-c 20");
+  EXPECT_THAT(none.err, ::testing::HasSubstr("--esm-c: no combination of the sweep reads it")) << none.err;
+  expect_bad(base + "--techniques esm --esm-c 200", "--esm-c", "report");
+  expect_bad(base + "--techniques cascades --light-angle 2", "--light-angle", "report");  // without pcss
+  expect_bad(base + "--poisson-taps 5", "--poisson-taps", "report");
+  expect_bad(base + "--depth-format d7", "--depth-format", "report");
+  // A shard with other settings belongs to another sweep.
+  const std::string sweep = "eval scene.json --techniques shadowmap --biases slope,constant --size 64x48 ";
+  ASSERT_EQ(shadowlab(dir, sweep + "--shard 0/2 --out s0").code, 0);
+  ASSERT_EQ(shadowlab(dir, sweep + "--bias-constant 0.01 --shard 1/2 --out s1").code, 0);
+  expect_bad("eval-merge s0 s1 --out m", "s1/eval.json", "m");
+  ASSERT_EQ(shadowlab(dir, sweep + "--shard 1/2 --out s1b").code, 0);
+  EXPECT_EQ(shadowlab(dir, "eval-merge s0 s1b --out m").code, 0);
+}
+
 // An error in a scene's field is named with the file and the light's own place in it, also with --light.
 TEST_F(EvalCli, SceneFieldErrorsNameTheFile) {
   std::ofstream(dir / "two.json") << R"({"objects": [{"primitive": {"type": "plane", "size": [6, 6]}}],
