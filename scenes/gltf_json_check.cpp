@@ -1,7 +1,9 @@
 // glTF JSON indices and byte counts checked before tinygltf reads them (see gltf_json_check.h).
 #include "scenes/gltf_json_check.h"
 
+#include <cctype>
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -92,10 +94,18 @@ class Walk {
         }
         const Kind k = kind_of(key);
         const char* array = k == Kind::index ? target_of(key) : nullptr;
-        if (k != Kind::none && child.is_number()) number(child, here, k, array, key == "byteStride");
-        else if (k == Kind::index && child.is_array() && !child.empty() && child[0].is_number())
+        // At the top level only "scene" is an index ("nodes" there is the array of node objects); a sparse
+        // accessor's "indices" is an object of its own.
+        const bool numeric = k != Kind::none && (!at.empty() || key == "scene") && !(key == "indices" && child.is_object());
+        const bool list = key == "children" || key == "nodes" || key == "joints";  // arrays of indices
+        if (numeric && list && !child.is_array())
+          problem = GltfJsonProblem{here, shown(child) + " is not an array of indices"};
+        else if (numeric && list)
           for (size_t i = 0; i < child.size(); ++i) number(child[i], here + "[" + std::to_string(i) + "]", k, array);
-        else value(child, here);  // objects (sparse "indices"), arrays of objects, everything else
+        else if (numeric)
+          number(child, here, k, array, key == "byteStride");
+        else
+          value(child, here);  // objects, arrays of objects, everything else
         if (problem) return;
       }
     } else if (v.is_array()) {
@@ -107,8 +117,8 @@ class Walk {
   std::map<std::string, size_t, std::less<>> sizes_;  // the top-level arrays' lengths
 
   void number(const json& v, const std::string& at, Kind k, const char* array = nullptr, bool stride = false) {
-    if (problem || !v.is_number()) return;  // a string or object where a number belongs: tinygltf's to report
-    const double d = v.get<double>();
+    if (problem) return;
+    const double d = v.is_number() ? v.get<double>() : -1.0;  // a string, object or null where a number belongs
     const double top = k == Kind::count ? 9007199254740992.0 : double(std::numeric_limits<int32_t>::max());
     const bool whole = std::isfinite(d) && d == std::floor(d) && d >= 0.0 && d <= top;
     if (k == Kind::mode) {
@@ -150,9 +160,115 @@ bool nests_too_deep(const unsigned char* text, size_t size) {
   return false;
 }
 
+// An accessor's required "type" and "componentType" (glTF 3.6.2: tinygltf names neither when one is wrong), and
+// a sparse accessor's index component type.
+std::optional<GltfJsonProblem> accessor_problem(const json& a, const std::string& at) {
+  static constexpr std::string_view kTypes[] = {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"};
+  if (!a.is_object()) return GltfJsonProblem{at, "is not an object"};
+  for (const char* key : {"componentType", "count", "type"})
+    if (!a.contains(key)) return GltfJsonProblem{at + "." + key, "missing (an accessor needs it)"};
+  const json& type = a["type"];
+  bool known = false;
+  if (type.is_string())
+    for (std::string_view t : kTypes) known |= type.get<std::string>() == t;
+  if (!known) return GltfJsonProblem{at + ".type", shown(type) + " is not SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 or MAT4"};
+  auto component = [&](const json& c, const std::string& where, std::initializer_list<int> allowed,
+                       const char* names) -> std::optional<GltfJsonProblem> {
+    bool ok = false;
+    for (int v : allowed) ok |= c.is_number() && c.get<double>() == double(v);
+    if (!ok) return GltfJsonProblem{where, shown(c) + " is not a component type glTF allows (" + names + ")"};
+    return std::nullopt;
+  };
+  if (auto p = component(a["componentType"], at + ".componentType", {5120, 5121, 5122, 5123, 5125, 5126},
+                         "5120 byte, 5121 unsigned byte, 5122 short, 5123 unsigned short, 5125 unsigned int, 5126 float"))
+    return p;
+  if (a.contains("sparse") && a["sparse"].is_object() && a["sparse"].contains("indices") &&
+      a["sparse"]["indices"].is_object()) {
+    const json& indices = a["sparse"]["indices"];
+    if (!indices.contains("componentType"))
+      return GltfJsonProblem{at + ".sparse.indices.componentType", "missing (sparse indices need it)"};
+    if (auto p = component(indices["componentType"], at + ".sparse.indices.componentType", {5121, 5123, 5125},
+                           "5121 unsigned byte, 5123 unsigned short, 5125 unsigned int"))
+      return p;
+  }
+  return std::nullopt;
+}
+
+bool base64_text(std::string_view s) {
+  for (const char c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '+' || c == '/' || c == '=')) return false;
+  return true;
+}
+
+// A buffer's "uri" and "byteLength": every buffer of a .gltf file needs a uri, in a .glb file all but the first
+// (which may be the BIN chunk); a data: URI holds base64; a file must be there (`dir`: the glTF file's folder).
+std::optional<GltfJsonProblem> buffer_problem(const json& b, const std::string& at, bool may_be_chunk,
+                                              const std::filesystem::path* dir) {
+  if (!b.is_object()) return GltfJsonProblem{at, "is not an object"};
+  if (!b.contains("byteLength")) return GltfJsonProblem{at + ".byteLength", "missing (a buffer needs it)"};
+  if (!b.contains("uri")) {
+    if (may_be_chunk) return std::nullopt;
+    return GltfJsonProblem{at + ".uri", "missing (only the first buffer of a .glb file may leave it out, for the file's "
+                                        "BIN chunk)"};
+  }
+  const json& uri = b["uri"];
+  if (!uri.is_string() || uri.get<std::string>().empty())
+    return GltfJsonProblem{at + ".uri", shown(uri) + " is not a file name or a data: URI"};
+  const std::string text = uri.get<std::string>();
+  if (text.rfind("data:", 0) == 0) {
+    // The media types tinygltf decodes (glTF names the first two for buffers); any other it takes for a file name.
+    static constexpr std::string_view kTypes[] = {"application/octet-stream", "application/gltf-buffer", "image/jpeg",
+                                                  "image/png", "image/bmp", "image/gif", "text/plain"};
+    const size_t comma = text.find(',');
+    const size_t base64 = text.find(";base64,");
+    if (comma == std::string::npos || base64 == std::string::npos || base64 + 7 != comma ||
+        !base64_text(std::string_view(text).substr(comma + 1)))
+      return GltfJsonProblem{at + ".uri", "a data: URI whose data is not base64 (data:application/octet-stream;base64,...)"};
+    const std::string_view type = std::string_view(text).substr(5, base64 - 5);
+    bool known = false;
+    for (std::string_view t : kTypes) known |= t == type;
+    if (!known)
+      return GltfJsonProblem{at + ".uri", "a data: URI of type '" + std::string(type) +
+                                          "' (a buffer's is application/octet-stream or application/gltf-buffer)"};
+    // The bytes it holds must be the buffer's byteLength (tinygltf refuses any other count).
+    const std::string_view data = std::string_view(text).substr(comma + 1);
+    const size_t pad = data.size() - std::min(data.find('='), data.size());
+    const double held = double(data.size() / 4 * 3 + (data.size() % 4 ? data.size() % 4 - 1 : 0)) - double(pad);
+    if (b["byteLength"].is_number() && b["byteLength"].get<double>() != held)
+      return GltfJsonProblem{at + ".uri", "the data: URI holds " + std::to_string(size_t(std::max(held, 0.0))) +
+                                          " bytes, byteLength says " + shown(b["byteLength"])};
+    return std::nullopt;
+  }
+  if (dir) {
+    const std::filesystem::path file = *dir / gltf_uri_decode(text);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+      return GltfJsonProblem{at + ".uri", "'" + text + "': " +
+                                          (std::filesystem::exists(file, ec) ? "not a regular file" : "no such file") +
+                                          " (looked for " + file.generic_string() + ")"};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
-std::optional<GltfJsonProblem> gltf_json_problem(const unsigned char* bytes, size_t length, bool binary) {
+std::string gltf_uri_decode(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    const bool escape = uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+                        std::isxdigit(static_cast<unsigned char>(uri[i + 2]));
+    if (escape) {
+      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+std::optional<GltfJsonProblem> gltf_json_problem(const unsigned char* bytes, size_t length, bool binary,
+                                                 const std::filesystem::path* dir) {
   const unsigned char* text = bytes;
   size_t size = length;
   if (binary) {  // 12-byte header, then the JSON chunk: length, type "JSON", data
@@ -172,6 +288,13 @@ std::optional<GltfJsonProblem> gltf_json_problem(const unsigned char* bytes, siz
   Walk w(doc);
   w.value(doc, "");
   if (w.problem) return w.problem;
+  if (doc.contains("accessors") && doc["accessors"].is_array())
+    for (size_t i = 0; i < doc["accessors"].size(); ++i)
+      if (auto p = accessor_problem(doc["accessors"][i], "accessors[" + std::to_string(i) + "]")) return p;
+  if (doc.contains("buffers") && doc["buffers"].is_array())
+    for (size_t i = 0; i < doc["buffers"].size(); ++i)
+      if (auto p = buffer_problem(doc["buffers"][i], "buffers[" + std::to_string(i) + "]", binary && i == 0, dir))
+        return p;
   // glTF 3.6.2.3: "normalized" is for 8- and 16-bit integer components only (read as a float or a 32-bit
   // integer, the flag would be ignored).
   if (doc.contains("accessors") && doc["accessors"].is_array())

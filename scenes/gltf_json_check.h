@@ -3,6 +3,7 @@
 // an unindexed primitive, "scene": -1 as no default scene), so such a file drew something without a word.
 #pragma once
 #include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -26,6 +27,13 @@ struct GltfJsonProblem {
 // lights, KHR_xmp_json_ld's free JSON-LD) and tinygltf keeps them as opaque values. A document nested deeper than
 // 256 levels is refused before it is parsed
 // (tinygltf's recursion overflowed the stack). A document that does not parse is left to tinygltf to report.
-std::optional<GltfJsonProblem> gltf_json_problem(const unsigned char* bytes, size_t length, bool binary);
+// Also an accessor without its componentType, count or type or with one glTF does not define; a buffer without
+// its byteLength, or without a uri where it needs one (every buffer of a .gltf file, all but the first of a .glb);
+// a data: URI that is not base64; and, given the file's folder `dir`, a buffer file that is not there.
+std::optional<GltfJsonProblem> gltf_json_problem(const unsigned char* bytes, size_t length, bool binary,
+                                                 const std::filesystem::path* dir = nullptr);
+
+// A URI's %XX escapes decoded (glTF URIs are percent-encoded: "my%20model.bin" is the file "my model.bin").
+std::string gltf_uri_decode(const std::string& uri);
 
 }  // namespace scenes
