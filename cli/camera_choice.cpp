@@ -49,8 +49,11 @@ size_t choose_camera(scenes::Scene& scene, const std::string& spec) {
   if (spec.empty()) return 0;
   if (spec.rfind("orbit:", 0) == 0) {
     const glm::vec3 o = parse_orbit(spec);
-    // Around what casts shadows (a staged ground does not), framed like the default camera.
-    scenes::Aabb box = scenes::scene_bounds(scene, scenes::InstanceFilter::casters);
+    // Around what casts shadows but a staged ground, framed like the default camera.
+    scenes::Aabb box;
+    for (size_t i = 0; i < scene.instances.size(); ++i)
+      if (scene.instances[i].casts_shadows && scene.instances[i].object != scene.staged_ground)
+        box.extend(scenes::instance_bounds(scene, i));
     if (box.empty()) box = scenes::scene_bounds(scene);
     scenes::Camera c = scenes::frame_camera(box, "orbit");
     const float framed = glm::length(c.position - c.target);

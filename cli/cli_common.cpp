@@ -90,20 +90,18 @@ void make_folder(scenes::io::WriteBatch& batch, const std::filesystem::path& dir
 }
 
 void check_output_dir(const std::string& file, const std::string& option) {
-  const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+  std::filesystem::path path(file);
+  if (!path.has_filename()) path = path.parent_path();  // "out/" names the folder out, made in "."
+  const std::filesystem::path parent = path.parent_path();
   std::error_code ec;
   if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
     throw CliError(option, "directory " + parent.string() + " does not exist");
 }
 
-namespace {
-
 bool is_model_file(const std::filesystem::path& p) {
   const std::string e = lower_extension(p);
   return e == ".gltf" || e == ".glb";
 }
-
-}  // namespace
 
 void check_scene_exists(const std::string& name) {
   const std::filesystem::path path(name);
@@ -136,6 +134,14 @@ scenes::Scene load_any(const std::string& name, const scenes::StageOptions* stag
 
 void print_notes(const std::vector<std::string>& notes) {
   for (const std::string& n : notes) std::fprintf(stderr, "shadowlab: note: %s\n", n.c_str());
+}
+
+void print_frame_warnings(const std::string& scene, const std::vector<std::string>& warnings,
+                          std::set<std::string>& said) {
+  for (const std::string& w : warnings) {
+    const std::string line = scene + ": " + w;
+    if (said.insert(line).second) std::fprintf(stderr, "shadowlab: warning: %s\n", line.c_str());
+  }
 }
 
 scenes::Scene load_scene_or_builtin(const std::string& name, const scenes::StageOptions* stage,

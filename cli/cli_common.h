@@ -11,6 +11,7 @@
 #include <functional>
 #include <stdexcept>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -67,6 +68,10 @@ scenes::Scene load_scene_or_builtin(const std::string& name, const scenes::Stage
                                     std::vector<std::string>* notes = nullptr);
 // Each note on stderr as `shadowlab: note: ...`.
 void print_notes(const std::vector<std::string>& notes);
+// A frame's warnings (frame::Frame::warnings) on stderr as `shadowlab: warning: SCENE: ...`, those not in `said`
+// yet (which they join), so that a sequence or a sweep says each once.
+void print_frame_warnings(const std::string& scene, const std::vector<std::string>& warnings,
+                          std::set<std::string>& said);
 
 // A progress line on stderr for work that runs over a second, only when stderr is a terminal (silent in scripts
 // and CI): update() sets what the work is doing; a small thread redraws it with the elapsed time four times a
@@ -100,7 +105,6 @@ class Stopwatch {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// Fails early (before any long work) when the folder an output file goes to does not exist.
 // The --threads option, left out for all cores, 0 (inline) up to kMaxThreads given; anything else is a CliError
 // on the option (issue 23: 10^8 threads ended in "out of memory"). check_threads returns what raster::Renderer
 // takes (-1 for all cores).
@@ -112,13 +116,18 @@ int check_threads(const std::optional<int>& threads);
 // would say), so that a run with several scenes fails before the first renders.
 void check_scene_exists(const std::string& name);
 
+// Fails early (before any long work) when the folder an output goes to does not exist. A name ending in a
+// separator ("out/", for outputs that are folders) names that folder, so its parent is the one checked.
 void check_output_dir(const std::string& file, const std::string& option);
+
 // batch.create_directories(dir), its IoError a CliError on `where` (batch: it removes the folders again unless
 // committed).
 void make_folder(scenes::io::WriteBatch& batch, const std::filesystem::path& dir, const std::string& where);
 
 // A file's lower-case extension with its dot (".exr"), for format decisions.
 std::string lower_extension(const std::filesystem::path& path);
+// A .gltf or .glb name (a file render and eval stage: scenes/stage.h).
+bool is_model_file(const std::filesystem::path& path);
 
 SHADOWLAB_ISA_END
 }  // namespace cli

@@ -33,6 +33,7 @@
 #include "scenes/reference/frame_reference.h"
 #include "scenes/reference/shimmer.h"
 #include "scenes/shadow_settings.h"
+#include "scenes/stage.h"
 #include "raster/simd/isa.h"
 
 namespace cli {
@@ -197,9 +198,19 @@ int run_eval(const EvalArgs& a) {
   nlohmann::json labels = nlohmann::json::array();  // the whole sweep's, so that eval-merge can tell sweeps apart
   for (const Combination& c : combos) labels.push_back(c.label());
 
-  const scenes::StageOptions stage;  // a bare glTF model gets its sun, ground and camera, as in render
+  // A bare glTF model gets its sun, ground and camera, as in render; the projective combinations see the ground
+  // as render stages it for them, casting nothing (scenes/stage.h).
+  const scenes::StageOptions stage;
   std::vector<std::string> notes;
   scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
+  std::optional<scenes::Scene> receivers_scene;
+  bool projective = false;
+  for (const auto& t : techniques) projective |= t == tech::Technique::projective;
+  if (std::error_code ec; projective && is_model_file(a.scene) && std::filesystem::is_regular_file(a.scene, ec)) {
+    scenes::StageOptions receivers = stage;
+    receivers.ground_casts = false;
+    receivers_scene.emplace(scenes::load_model_staged(a.scene, receivers).scene);
+  }
   const std::optional<size_t> chosen_light = choose_light(scene, a.light);
   const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);  // once for the sweep
   print_notes(notes);
@@ -242,26 +253,37 @@ int run_eval(const EvalArgs& a) {
 
     Progress progress;
     progress.update("reference: casting rays");
-    const reference::FrameReference ref = reference::reference_for(scene, base, renderer, -1.0f, &textures);
-    const double rays_per_s = ref.exact.ms > 0 ? double(ref.exact.rays) / (ref.exact.ms / 1000.0) : 0.0;
-    std::printf("reference: %zu triangles, BVH %.1f ms; %zu rays in %.1f ms (%.2f Mrays/s); epsilon %g\n",
-                ref.triangles, ref.bvh_ms, ref.exact.rays, ref.exact.ms, rays_per_s / 1e6, double(ref.exact.epsilon));
-
-    // The moved scenes of the shimmer columns and their references, once for the whole sweep.
+    // The scenes a combination renders: its reference, and the moved views of the shimmer columns with theirs,
+    // each cast once for the sweep.
     struct Moved {
       std::string column;
       scenes::Scene scene;
       std::optional<reference::FrameReference> ref;
     };
-    std::vector<Moved> motions;
-    if (a.shimmer_pixels != 0.0f)
-      motions.push_back({"shimmer_camera_pct", reference::moved(scene, base.camera, base.height, {a.shimmer_pixels, 0.0f}), {}});
-    if (a.shimmer_degrees != 0.0f)
-      motions.push_back({"shimmer_light_pct", reference::moved(scene, base.camera, base.height, {0.0f, a.shimmer_degrees}), {}});
-    for (Moved& m : motions) m.ref.emplace(reference::reference_for(m.scene, base, renderer, -1.0f, &textures));
+    struct Variant {
+      const scenes::Scene* scene;
+      reference::FrameReference ref;
+      std::vector<Moved> motions;
+    };
+    auto variant = [&](const scenes::Scene& s) {
+      Variant v{&s, reference::reference_for(s, base, renderer, -1.0f, &textures), {}};
+      if (a.shimmer_pixels != 0.0f)
+        v.motions.push_back({"shimmer_camera_pct", reference::moved(s, base.camera, base.height, {a.shimmer_pixels, 0.0f}), {}});
+      if (a.shimmer_degrees != 0.0f)
+        v.motions.push_back({"shimmer_light_pct", reference::moved(s, base.camera, base.height, {0.0f, a.shimmer_degrees}), {}});
+      for (Moved& m : v.motions) m.ref.emplace(reference::reference_for(m.scene, base, renderer, -1.0f, &textures));
+      return v;
+    };
+    const Variant main = variant(scene);
+    const std::optional<Variant> receivers = receivers_scene ? std::optional<Variant>(variant(*receivers_scene)) : std::nullopt;
+    const reference::FrameReference& ref = main.ref;
+    const double rays_per_s = ref.exact.ms > 0 ? double(ref.exact.rays) / (ref.exact.ms / 1000.0) : 0.0;
+    std::printf("reference: %zu triangles, BVH %.1f ms; %zu rays in %.1f ms (%.2f Mrays/s); epsilon %g\n",
+                ref.triangles, ref.bvh_ms, ref.exact.rays, ref.exact.ms, rays_per_s / 1e6, double(ref.exact.epsilon));
 
     nlohmann::json rows = nlohmann::json::array();
     ContactSheets sheets;  // encoded as each combination ends: a sweep keeps PNG bytes, not whole frames
+    std::set<std::string> warned;  // frame warnings said so far: each once per sweep
     for (size_t k = 0; k < combos.size(); ++k) {
       if (k % shard.count != shard.index) continue;
       const Combination& c = combos[k];
@@ -269,11 +291,13 @@ int run_eval(const EvalArgs& a) {
       frame::FrameConfig config = combo_config(base, c, a.shadow);
       config.params = combo_params[k];
       config.aliasing = true;  // measured where the technique has a measure (frame/aliasing.h)
-      const reference::ScoredFrame sf = reference::score_config(scene, config, renderer, ref, options, &textures);
+      const Variant& v = receivers && c.technique == tech::Technique::projective ? *receivers : main;
+      const reference::ScoredFrame sf = reference::score_config(*v.scene, config, renderer, v.ref, options, &textures);
+      print_frame_warnings(a.scene, sf.frame.warnings, warned);
       std::vector<std::vector<reference::LightShimmer>> shimmers;
-      for (const Moved& m : motions) {
+      for (const Moved& m : v.motions) {
         const reference::ScoredFrame moved = reference::score_config(m.scene, config, renderer, *m.ref, options, &textures);
-        shimmers.push_back(reference::compare_frames(*sf.frame.surface, ref.exact, *moved.frame.surface, m.ref->exact,
+        shimmers.push_back(reference::compare_frames(*sf.frame.surface, v.ref.exact, *moved.frame.surface, m.ref->exact,
                                                      options.shadow_below));
       }
       for (size_t l = 0; l < sf.score.lights.size(); ++l) {
@@ -281,7 +305,7 @@ int run_eval(const EvalArgs& a) {
         rows.back()["index"] = k;
         rows.back()["shimmer_camera_pct"] = nullptr;
         rows.back()["shimmer_light_pct"] = nullptr;
-        for (size_t m = 0; m < motions.size(); ++m) rows.back()[motions[m].column] = shimmers[m][l].percent();
+        for (size_t m = 0; m < v.motions.size(); ++m) rows.back()[v.motions[m].column] = shimmers[m][l].percent();
         const frame::AliasingImage* al = l < sf.frame.aliasing.size() ? &sf.frame.aliasing[l] : nullptr;
         const bool measured = al && al->measured > 0;
         rows.back()["aliasing_max"] = measured ? nlohmann::json(al->max) : nlohmann::json(nullptr);

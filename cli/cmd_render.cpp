@@ -103,6 +103,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
     stage.sun = glm::vec2(az, el);
   }
   stage.z_up = a.up == "z";
+  stage.ground_casts = a.technique != "projective";
   stage.camera_chosen = a.camera.rfind("orbit:", 0) == 0;
   std::vector<std::string> notes;
   scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
@@ -130,6 +131,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
   raster::Renderer renderer(check_threads(a.threads));
   std::optional<frame::Frame> result;  // Frame has no empty state: the last frame rendered
   frame::FrameCache cache;             // projective maps live across frames: only changed casters are rebuilt
+  std::set<std::string> warned;        // frame warnings said so far (each once per sequence)
   nlohmann::json frames = nlohmann::json::array();
   for (int i = 0; i < a.frames; ++i) {
     if (a.animate && i > 0) {
@@ -158,6 +160,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
       if (where.rfind("--", 0) != 0 && std::filesystem::is_regular_file(a.scene, ec)) where = a.scene + ": " + where;
       throw CliError(where, what.substr(colon + 2));
     }
+    print_frame_warnings(a.scene, result->warnings, warned);
     const double total = watch.ms();
     if (text && a.stats) {
       const frame::FrameStats& s = result->stats;

@@ -151,6 +151,9 @@ struct Scene {
   std::vector<Light> lights;
   Look look;                     // exposure, tone map and background
   std::vector<std::string> warnings;  // repairs made while loading (e.g. non-finite normals replaced)
+  // The top-level object staging added as the ground under a bare model (scenes/stage.h): a camera framing the
+  // model leaves it out.
+  std::optional<uint32_t> staged_ground;
   bool operator==(const Scene&) const = default;
 };
 

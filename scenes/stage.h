@@ -16,6 +16,10 @@ namespace scenes {
 
 struct StageOptions {
   bool ground = true;                // a ground plane under a model that has no lights
+  // The ground is drawn into the shadow maps, as a floor is: filtered maps (esm, vsm, evsm) need their
+  // receivers in the map, or every shadow erodes by the blur where the map holds only the far plane. Projective
+  // shadows want it false: their casters darken everything beyond them, and the article's ground casts nothing.
+  bool ground_casts = true;
   // Azimuth (from +Z towards +X) and elevation, degrees; default: kStageSunAzimuth degrees round from the
   // camera's azimuth, kStageSunElevation up.
   std::optional<glm::vec2> sun;

@@ -141,6 +141,9 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   }
   for (const auto& [key, value] : config.params)
     if (auto why = unread_override(resolved, key, value)) throw FrameError(*why);
+  std::vector<std::string> warnings;
+  for (size_t i = 0; i < resolved.size(); ++i)
+    if (auto w = moment_receiver_warning(resolved[i], i, scene)) warnings.push_back(std::move(*w));
 
   // ---- Material textures: the caller's (loaded once per scene), or loaded here for this frame alone; a missing
   // or unreadable file fails the frame before any work.
@@ -248,6 +251,7 @@ Frame render_frame(const scenes::Scene& scene, const FrameConfig& config, raster
   std::vector<std::vector<TexturedCameraVertex>> mesh_textured(scene.meshes.size());  // textured draws only
   frame.view_proj = view_proj;
   frame.eye = camera.position;
+  frame.warnings = std::move(warnings);
   if (config.surface_record) frame.surface.emplace(config.width, config.height, scene.lights.size());
   {
     CameraShader shader;

@@ -94,6 +94,9 @@ struct Frame {
   std::optional<SurfaceRecord> surface;  // with FrameConfig::surface_record
   glm::mat4 view_proj{1.0f};             // the camera's projection · view
   glm::vec3 eye{0.0f};                   // the camera's position
+  // Settings that render but likely not as meant (frame_lights.h: moment_receiver_warning), for the caller to
+  // show once.
+  std::vector<std::string> warnings;
 };
 
 // Throws FrameError naming the field for a bad configuration or light setting. `cache` (optional) keeps

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include "raster/simd/isa.h"
+#include "shading/techniques/filtered.h"
 #include "shading/techniques/param_use.h"
 
 namespace frame {
@@ -210,6 +211,37 @@ std::optional<std::string> unread_override(const std::vector<ResolvedLight>& lig
     if (t.built && tech::find_param(t.id, key)) takers += (takers.empty() ? "" : ", ") + std::string(t.name);
   return "params." + key + ": no light of this frame uses a technique that takes it" +
          (takers.empty() ? std::string(" (no technique does)") : " (taken by: " + takers + ")");
+}
+
+std::optional<std::string> moment_receiver_warning(const ResolvedLight& light, size_t index, const scenes::Scene& scene) {
+  using shading::tech::Technique;
+  const Technique t = light.config.technique;
+  const bool moments = t == Technique::esm || t == Technique::vsm || t == Technique::evsm2 || t == Technique::evsm4 ||
+                       ((t == Technique::cascades || t == Technique::cube) && shading::tech::moments_param(light.config));
+  if (!moments) return std::nullopt;
+  // An object counts when some instance of it receives and none of it casts.
+  std::vector<char> casts(scene.objects.size(), 0), receives(scene.objects.size(), 0);
+  for (const scenes::Instance& inst : scene.instances) {
+    if (inst.object >= scene.objects.size()) continue;
+    casts[inst.object] |= char(inst.casts_shadows);
+    receives[inst.object] |= char(inst.receives_shadows);
+  }
+  std::string names;
+  size_t count = 0;
+  for (size_t k = 0; k < scene.objects.size(); ++k) {
+    if (!receives[k] || casts[k]) continue;
+    if (count < 3) names += std::string(count ? ", " : "") + "objects[" + std::to_string(k) + "]" +
+                            (scene.objects[k].empty() ? std::string() : " (" + scene.objects[k] + ")");
+    ++count;
+  }
+  if (count == 0) return std::nullopt;
+  if (count > 3) names += " and " + std::to_string(count - 3) + " more";
+  const std::string& name = scene.lights[index].name;
+  return "lights[" + std::to_string(index) + "]" + (name.empty() ? std::string() : " (" + name + ")") + ": " +
+         std::string(shading::tech::to_string(t)) + " reads its map's moments around each receiver, and " + names +
+         (count == 1 ? " receives shadows without casting: it is not in the map, and the shadows on it"
+                     : " receive shadows without casting: they are not in the map, and the shadows on them") +
+         " fade or vanish (let " + (count == 1 ? "it" : "them") + " cast, or use shadowmap or pcss)";
 }
 
 SHADOWLAB_ISA_END

@@ -19,9 +19,27 @@ TEST(CliFiltered, EachTechniqueRendersTheTutorial) {
     const testsupport::Outcome r = testsupport::shadowlab(
         dir, std::string("render tutorial --size 64x36 --shadow-size 128 --threads 2 --out f.png --technique ") + t);
     EXPECT_EQ(r.code, 0) << t << ": " << r.err;
+    EXPECT_EQ(r.err, "") << t;  // every object of the room casts: no warning
     EXPECT_TRUE(std::filesystem::exists(dir / "f.png")) << t;
     std::filesystem::remove(dir / "f.png");
   }
+}
+
+// The projective scene's terrain only receives: a moment map misses it and its figures' shadows vanish, which
+// the run says once (not once per frame), and still renders; with the classic map it says nothing.
+TEST(CliFiltered, MomentMapsOverReceiversThatCastNothingAreWarnedOnce) {
+  const auto dir = testsupport::temp_dir("cli_filtered_warn");
+  const testsupport::Outcome r = testsupport::shadowlab(
+      dir, "render projective --size 64x36 --shadow-size 128 --frames 2 --animate --technique esm --out f.png");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, ::testing::MatchesRegex("shadowlab: warning: projective: lights\\[0\\] \\([a-z]+\\): esm reads its "
+                                             "map's moments around each receiver, and objects\\[0\\] \\(terrain\\) "
+                                             "receives shadows without casting[^\n]+\n"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "f.png"));
+  const testsupport::Outcome classic =
+      testsupport::shadowlab(dir, "render projective --size 64x36 --shadow-size 128 --technique shadowmap --out g.png");
+  EXPECT_EQ(classic.code, 0) << classic.err;
+  EXPECT_EQ(classic.err, "");
 }
 
 TEST(CliFiltered, PcssOnAPointLightsCubeMap) {

@@ -62,12 +62,20 @@ TEST(Stage, BareModelGetsASunAGroundAndACamera) {
   EXPECT_NEAR(all.max.z - all.min.z, 12.0f, 1e-4f);
   EXPECT_NEAR(all.min.y, 0.0f, 1e-5f);
   EXPECT_NEAR(0.5f * (all.min.x + all.max.x), 0.5f, 1e-4f);
-  EXPECT_NEAR(casters.max.z - casters.min.z, 4.0f, 1e-5f);  // the ground casts nothing: the model alone
+  // The ground is drawn into the maps, as a floor is (filtered maps need their receivers in the map), unless
+  // asked otherwise (projective shadows, whose receivers cast nothing).
+  EXPECT_NEAR(casters.max.z - casters.min.z, 12.0f, 1e-4f);
   ASSERT_EQ(s.scene.cameras.size(), 1u);
   EXPECT_GE(s.notes.size(), 3u);  // sun, ground, camera
+  scenes::StageOptions receivers = o;
+  receivers.ground_casts = false;
+  const scenes::Aabb model = scenes::scene_bounds(scenes::load_model_staged(write_box(dir, "box3", false), receivers).scene,
+                                                  scenes::InstanceFilter::casters);
+  EXPECT_NEAR(model.max.z - model.min.z, 4.0f, 1e-5f);  // the model alone
 
   o.ground = false;
   const scenes::StagedScene bare = scenes::load_model_staged(write_box(dir, "box2", false), o);
+  EXPECT_FALSE(bare.scene.staged_ground.has_value());
   EXPECT_NEAR(scenes::scene_bounds(bare.scene).max.x - scenes::scene_bounds(bare.scene).min.x, 1.0f, 1e-5f);
 }
 
@@ -100,7 +108,8 @@ TEST(Stage, ZUpModelIsTurnedUpright) {
   scenes::StageOptions o;
   o.z_up = true;
   const scenes::StagedScene s = scenes::load_model_staged(write_box(dir, "box", false), o);
-  const scenes::Aabb m = scenes::scene_bounds(s.scene, scenes::InstanceFilter::casters);
+  ASSERT_EQ(s.scene.staged_ground, std::optional<uint32_t>(1));
+  const scenes::Aabb m = scenes::object_bounds(s.scene, 0);  // the model
   EXPECT_NEAR(m.max.y - m.min.y, 4.0f, 1e-5f);
   EXPECT_NEAR(m.max.z - m.min.z, 2.0f, 1e-5f);
   EXPECT_NEAR(m.max.x - m.min.x, 1.0f, 1e-5f);

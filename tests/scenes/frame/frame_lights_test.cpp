@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "scenes/frame/frame.h"
 #include "scenes/frame/frame_lights.h"
@@ -250,4 +253,44 @@ TEST(FrameLights, AmbientOfASpotIsUniformOverTheFloor) {
       ASSERT_EQ(p.a, 1.0f) << x << ", " << y;
       ASSERT_NEAR(p.r, expected, expected * 1e-5) << x << ", " << y;
     }
+}
+
+// A moment-map light over a receiver that casts nothing (the projective scene's terrain) is warned about, naming
+// the light and the object; a classic map, or the same light once the terrain casts, is not. cube and cascades
+// warn only with their `moments` parameter.
+TEST(FrameLights, MomentMapsWarnOfReceiversMissingFromTheMap) {
+  scenes::Scene s = scenes::builtin_scene("projective");
+  ASSERT_FALSE(s.lights.empty());
+  ASSERT_EQ(s.objects.at(0), "terrain");
+  auto warning = [&](shading::tech::Technique t, std::map<std::string, shading::tech::ParamValue> params = {}) {
+    frame::FrameConfig o;
+    o.technique = t;
+    o.params = std::move(params);
+    return frame::moment_receiver_warning(frame::resolve_light(s.lights[0], 0, o), 0, s);
+  };
+  using shading::tech::Technique;
+  for (Technique t : {Technique::esm, Technique::vsm, Technique::evsm2, Technique::evsm4}) {
+    const std::optional<std::string> w = warning(t);
+    ASSERT_TRUE(w) << shading::tech::to_string(t);
+    EXPECT_EQ(w->rfind("lights[0] (" + s.lights[0].name + "): " + std::string(shading::tech::to_string(t)) +
+                           " reads its map's moments around each receiver, and objects[0] (terrain) receives shadows",
+                       0),
+              0u)
+        << *w;
+  }
+  EXPECT_FALSE(warning(Technique::shadowmap));
+  EXPECT_FALSE(warning(Technique::pcss));
+  EXPECT_FALSE(warning(Technique::cascades));
+  EXPECT_TRUE(warning(Technique::cascades, {{"moments", std::string("vsm")}}));
+  for (scenes::Instance& inst : s.instances) inst.casts_shadows = true;
+  EXPECT_FALSE(warning(Technique::esm));
+  // Two objects: both named, in the plural.
+  for (scenes::Instance& inst : s.instances) {
+    inst.casts_shadows = inst.object > 1;
+    inst.receives_shadows = true;
+  }
+  const std::optional<std::string> two = warning(Technique::vsm);
+  ASSERT_TRUE(two);
+  EXPECT_NE(two->find("objects[0] (terrain), objects[1]"), std::string::npos) << *two;
+  EXPECT_NE(two->find("receive shadows without casting: they are not in the map"), std::string::npos) << *two;
 }
