@@ -92,8 +92,11 @@ int run_list(bool json) {
   }
   for (const scenes::BuiltinInfo& s : scenes::list_builtin_scenes()) print_line("scene", s.name, s.description);
   for (const tech::TechniqueInfo& t : tech::kTechniques) {
-    const std::string line =
-        std::string(t.description) + " [lights: " + tech::light_names(t.lights) + (t.built ? "]" : "; not built yet]");
+    // The map a light of this technique gets when the scene gives none (`none` builds no map).
+    const std::string map = t.map_size == 0 ? std::string()
+                                            : "; map " + std::to_string(t.map_size) + "² " + std::string(tech::to_string(t.depth_format));
+    const std::string line = std::string(t.description) + " [lights: " + tech::light_names(t.lights) + map +
+                             (t.built ? "]" : "; not built yet]");
     print_line("technique", t.name, line);
   }
   print_table("filter", scenes::filter_names());

@@ -128,6 +128,9 @@ TEST_F(Cli, ListNamesScenesAndTables) {
   ASSERT_EQ(r.code, 0);
   EXPECT_THAT(r.out, ::testing::ContainsRegex("scene +tutorial +[^\n]+"));
   EXPECT_THAT(r.out, ::testing::ContainsRegex("technique +shadowmap"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("[lights: directional, spot; map 1024² d16]"));  // shadowmap's defaults
+  EXPECT_THAT(r.out, ::testing::HasSubstr("[lights: directional, spot, point; map 4096² d32f]"));  // irregular's
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("technique +none +[^\n]+\\[lights: [a-z, ]+\\]"));  // no map
   EXPECT_THAT(r.out, ::testing::ContainsRegex("filter +pcf"));
   EXPECT_EQ(shadowlab(dir, "--help").code, 0);
   EXPECT_EQ(shadowlab(dir, "shadowmap --help").code, 0);
@@ -236,6 +239,11 @@ TEST_F(Cli, BadInputIsOneLineAndExitTwo) {
     ASSERT_EQ(shadowlab(dir, "render tutorial --size 16x16 --maps m --out small.png").code, 0);
     fs::copy_file(dir / "m" / "light0-sun.exr", dir / "map.png");
     expect_bad("diff map.png map.png", "map.png");
+    // A folder named with a trailing separator is that folder: its parent (here ".") is the one that must exist.
+    ASSERT_EQ(shadowlab(dir, "render tutorial --size 16x16 --maps slash/ --out slash.png").code, 0);
+    EXPECT_TRUE(fs::is_regular_file(dir / "slash" / "light0-sun.exr"));
+    const Outcome nested = shadowlab(dir, "render tutorial --size 16x16 --maps no/such/ --out slash2.png");
+    EXPECT_EQ(nested.err, "shadowlab: error: --maps: directory no does not exist\n");
   }
   // Issue 23: a valid map wider than a frame target; its preview is refused in our words, not the target's.
   {
