@@ -29,6 +29,7 @@ size_t components_of(int type) {
     case TINYGLTF_TYPE_VEC2: return 2;
     case TINYGLTF_TYPE_VEC3: return 3;
     case TINYGLTF_TYPE_VEC4: return 4;
+    case TINYGLTF_TYPE_MAT4: return 16;
     default: return 0;
   }
 }
@@ -38,6 +39,7 @@ const char* type_name(int type) {
     case TINYGLTF_TYPE_SCALAR: return "SCALAR";
     case TINYGLTF_TYPE_VEC2: return "VEC2";
     case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
     default: return "VEC4";
   }
 }
@@ -125,6 +127,11 @@ void AccessorReader::read(int index, const std::string& key, int type, Want want
   if (want == Want::floats_or_normalized && !is_float && !(a.normalized && is_unsigned))
     fail(where, "expected FLOAT or normalized unsigned components");
   if (want == Want::unsigned_ints && !is_unsigned) fail(where, "expected unsigned integer components");
+  if (want == Want::unsigned_small && ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+      ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
+    fail(where, "expected UNSIGNED_BYTE or UNSIGNED_SHORT components");
+  if (want == Want::quantized && ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    fail(where, "expected FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT components");
   if (a.count > kMaxElements) fail(where, "count " + std::to_string(a.count) + " is too large");
   const size_t element = n * csize;
 
@@ -177,34 +184,44 @@ void AccessorReader::read(int index, const std::string& key, int type, Want want
   }
 }
 
-// glm vectors are tightly packed floats, so they are read in place as flat component arrays.
-static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
+// glm vectors and matrices are tightly packed components, so they are read in place as flat component arrays.
+static_assert(sizeof(glm::vec2) == 2 * sizeof(float) && sizeof(glm::vec3) == 3 * sizeof(float) &&
+              sizeof(glm::vec4) == 4 * sizeof(float) && sizeof(glm::mat4) == 16 * sizeof(float) &&
+              sizeof(glm::uvec4) == 4 * sizeof(uint32_t));
 
-std::vector<glm::vec3> AccessorReader::vec3(int accessor, const std::string& key) const {
-  std::vector<glm::vec3> out;
-  read<float>(accessor, key, TINYGLTF_TYPE_VEC3, Want::floats, [&](size_t n) {
+template <typename Element, typename Component>
+std::vector<Element> AccessorReader::read_all(int accessor, const std::string& key, int type, Want want) const {
+  std::vector<Element> out;
+  read<Component>(accessor, key, type, want, [&](size_t n) {
     out.resize(n);
-    return n ? &out.data()->x : nullptr;
+    return n ? reinterpret_cast<Component*>(out.data()) : nullptr;
   });
   return out;
 }
 
-std::vector<glm::vec2> AccessorReader::vec2(int accessor, const std::string& key) const {
-  std::vector<glm::vec2> out;
-  read<float>(accessor, key, TINYGLTF_TYPE_VEC2, Want::floats_or_normalized, [&](size_t n) {
-    out.resize(n);
-    return n ? &out.data()->x : nullptr;
-  });
-  return out;
+std::vector<glm::vec3> AccessorReader::vec3(int accessor, const std::string& key, bool quantized) const {
+  return read_all<glm::vec3, float>(accessor, key, TINYGLTF_TYPE_VEC3, quantized ? Want::quantized : Want::floats);
+}
+
+std::vector<glm::vec2> AccessorReader::vec2(int accessor, const std::string& key, bool quantized) const {
+  return read_all<glm::vec2, float>(accessor, key, TINYGLTF_TYPE_VEC2,
+                                    quantized ? Want::quantized : Want::floats_or_normalized);
 }
 
 std::vector<uint32_t> AccessorReader::indices(int accessor, const std::string& key) const {
-  std::vector<uint32_t> out;
-  read<uint32_t>(accessor, key, TINYGLTF_TYPE_SCALAR, Want::unsigned_ints, [&](size_t n) {
-    out.resize(n);
-    return out.data();
-  });
-  return out;
+  return read_all<uint32_t, uint32_t>(accessor, key, TINYGLTF_TYPE_SCALAR, Want::unsigned_ints);
+}
+
+std::vector<glm::vec4> AccessorReader::weights(int accessor, const std::string& key) const {
+  return read_all<glm::vec4, float>(accessor, key, TINYGLTF_TYPE_VEC4, Want::floats_or_normalized);
+}
+
+std::vector<glm::uvec4> AccessorReader::joints(int accessor, const std::string& key) const {
+  return read_all<glm::uvec4, uint32_t>(accessor, key, TINYGLTF_TYPE_VEC4, Want::unsigned_small);
+}
+
+std::vector<glm::mat4> AccessorReader::mat4(int accessor, const std::string& key) const {
+  return read_all<glm::mat4, float>(accessor, key, TINYGLTF_TYPE_MAT4, Want::floats);
 }
 
 }  // namespace scenes::gltf

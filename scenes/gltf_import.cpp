@@ -1,6 +1,6 @@
 // glTF 2.0 import (see gltf_import.h): load the file with tinygltf, walk the node hierarchy in double precision,
 // convert each referenced primitive once, with its material (gltf_materials.h), then cameras and KHR_lights_punctual
-// lights on demand.
+// lights on demand; skinned and morphed nodes are posed once the walk is done (gltf_pose.h).
 #include "scenes/gltf_import.h"
 
 #include <algorithm>
@@ -9,10 +9,12 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
 #include <numeric>
+#include <optional>
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -22,6 +24,7 @@
 #include "scenes/gltf_accessors.h"
 #include "scenes/gltf_json_check.h"
 #include "scenes/gltf_materials.h"
+#include "scenes/gltf_pose.h"
 #include "scenes/mesh_ops.h"
 #include "scenes/scene_error.h"
 
@@ -124,7 +127,9 @@ class Importer {
   Importer(const tinygltf::Model& model, DataUriImages data_uri_images, std::string file,
            std::filesystem::path dir, Scene& out)
       : model_(model), file_(std::move(file)), out_(out), read_(model, file_),
-        materials_(model, std::move(data_uri_images), file_, std::move(dir), out.materials) {}
+        materials_(model, std::move(data_uri_images), file_, std::move(dir), out.materials),
+        quantized_(std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_mesh_quantization") !=
+                   model.extensionsUsed.end()) {}
 
   void run() {
     // A required extension the importer does not read would draw the file wrongly (compressed geometry as
@@ -149,6 +154,7 @@ class Importer {
         if (!child[i]) roots.push_back(int(i));
     }
     walk(roots);
+    for (const Posed& p : posed_) pose(p);
     if (out_.instances.empty()) fail("", "empty mesh: the file's scene has no triangles");
     bool area = false;
     for (const Instance& inst : out_.instances) area = area || has_triangle_with_area(out_.meshes[inst.mesh], inst.transform);
@@ -181,6 +187,8 @@ class Importer {
                         ": a glTF node has at most one parent");
         parent[size_t(c)] = int(i);
       }
+    parent_ = parent;
+    world_.assign(n, std::nullopt);
     struct Item {
       int index;
       glm::dmat4 parent;
@@ -209,8 +217,9 @@ class Importer {
       if (local[0][3] != 0.0 || local[1][3] != 0.0 || local[2][3] != 0.0 || local[3][3] != 1.0)
         fail(key + ".matrix", "not an affine transform: its last row must be 0, 0, 0, 1");
       const glm::dmat4 world = item.parent * local;
+      world_[size_t(item.index)] = world;
       const glm::mat4 worldf(world);
-      if (node.mesh >= 0) add_mesh_instances(node, worldf, key);
+      if (node.mesh >= 0) add_mesh_instances(size_t(item.index), worldf, key);
       if (node.camera >= 0) add_camera(node, worldf, key);
       const auto ext = node.extensions.find("KHR_lights_punctual");
       if (ext != node.extensions.end() && ext->second.Has("light")) {
@@ -241,10 +250,28 @@ class Importer {
     }
   }
 
-  void add_mesh_instances(const tinygltf::Node& node, const glm::mat4& world, const std::string& key) {
+  // A node's primitives as instances. A skinned or morphed node's meshes are its own, posed (gltf_pose.h) once
+  // the whole hierarchy is walked, since its joints may come later: its instances are placed now, in file
+  // order, and their meshes filled in by pose().
+  void add_mesh_instances(size_t index, const glm::mat4& world, const std::string& key) {
+    const tinygltf::Node& node = model_.nodes[index];
     if (size_t(node.mesh) >= model_.meshes.size())
       fail(key + ".mesh", "mesh " + std::to_string(node.mesh) + " does not exist");
     const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+    if (node.skin >= 0 && size_t(node.skin) >= model_.skins.size())
+      fail(key + ".skin", "skin " + std::to_string(node.skin) + " does not exist");
+    if (node.skin >= 0 || !gltf::morph_weights(node, mesh).empty()) {
+      posed_.push_back({index, key, out_.instances.size(), world});
+      for (const tinygltf::Primitive& prim : mesh.primitives) {
+        const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+        if (!triangles(mode)) continue;  // pose() says why, as primitive() does
+        Instance inst;
+        inst.name = !node.name.empty() ? node.name : mesh.name;
+        inst.transform = node.skin >= 0 ? glm::mat4(1.0f) : world;  // skinned: the joints place it (glTF §3.7.3.3)
+        out_.instances.push_back(inst);
+      }
+      return;
+    }
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const auto converted = primitive(size_t(node.mesh), p);
       if (!converted) continue;
@@ -265,19 +292,90 @@ class Importer {
     const std::string where = indexed("meshes", m) + "." + indexed("primitives", p);
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
     std::optional<std::pair<uint32_t, uint32_t>> result;
-    if (mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+    if (triangles(mode)) {
       out_.meshes.push_back(convert(prim, mode, where, model_.meshes[m].name));
       result = std::make_pair(uint32_t(out_.meshes.size() - 1), materials_.material(prim.material, where));
-    } else if (mode >= 0 && mode <= 3) {
-      out_.warnings.push_back(file_ + ": " + where + ": mode " + std::to_string(mode) + " (points or lines) skipped");
     } else {
-      fail(where + ".mode", "unknown primitive mode " + std::to_string(mode));
+      skip(mode, where);
     }
     primitives_[key] = result;
     return result;
   }
 
-  Mesh convert(const tinygltf::Primitive& prim, int mode, const std::string& where, const std::string& name) {
+  static bool triangles(int mode) {
+    return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
+  }
+  // Points and lines are skipped with a warning (once per primitive); any other mode is an error.
+  void skip(int mode, const std::string& where) {
+    if (mode < 0 || mode > 3) fail(where + ".mode", "unknown primitive mode " + std::to_string(mode));
+    const std::string w = file_ + ": " + where + ": mode " + std::to_string(mode) + " (points or lines) skipped";
+    if (std::find(out_.warnings.begin(), out_.warnings.end(), w) == out_.warnings.end()) out_.warnings.push_back(w);
+  }
+
+  // A node whose meshes are posed after the walk: its index, key, first instance and world transform.
+  struct Posed {
+    size_t node;
+    std::string key;
+    size_t first_instance;
+    glm::mat4 world;
+  };
+
+  // A node's world transform, for a joint: as walked, or (a joint outside the scene's hierarchy) composed up its
+  // parents, which walk() has checked are unique; a chain longer than the node count is a cycle.
+  glm::dmat4 global(int index, const std::string& key) const {
+    glm::dmat4 m(1.0);
+    for (size_t steps = 0; index >= 0; ++steps) {
+      if (steps > model_.nodes.size()) fail(key, "the joint's parents form a cycle");
+      if (world_[size_t(index)]) return *world_[size_t(index)] * m;
+      m = node_matrix(model_.nodes[size_t(index)]) * m;
+      index = parent_[size_t(index)];
+    }
+    return m;
+  }
+
+  void pose(const Posed& p) {
+    const tinygltf::Node& node = model_.nodes[p.node];
+    const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+    const std::vector<double> weights = gltf::morph_weights(node, mesh);
+    std::vector<glm::mat4> joints;
+    if (node.skin >= 0) {
+      const tinygltf::Skin& skin = model_.skins[size_t(node.skin)];
+      const std::string key = indexed("skins", size_t(node.skin)) + ".joints";
+      std::vector<glm::dmat4> globals;
+      for (int j : skin.joints) {
+        if (j < 0 || size_t(j) >= model_.nodes.size()) fail(key, "node " + std::to_string(j) + " does not exist");
+        check_transform_fields(model_.nodes[size_t(j)], indexed("nodes", size_t(j)));
+        globals.push_back(global(j, key));
+      }
+      joints = gltf::joint_matrices(model_, size_t(node.skin), read_, file_, globals);
+    }
+    size_t instance = p.first_instance, unweighted = 0;
+    for (size_t k = 0; k < mesh.primitives.size(); ++k) {
+      const tinygltf::Primitive& prim = mesh.primitives[k];
+      const std::string where = indexed("meshes", size_t(node.mesh)) + "." + indexed("primitives", k);
+      const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+      if (!triangles(mode)) {
+        skip(mode, where);
+        continue;
+      }
+      Mesh m = convert(prim, mode, where, mesh.name, [&](Mesh& raw) {
+        if (!weights.empty()) gltf::apply_morph_targets(prim, weights, read_, quantized_, file_, where, raw);
+        if (node.skin >= 0) unweighted += gltf::apply_skin(prim, joints, p.world, read_, file_, where, raw);
+      });
+      out_.meshes.push_back(std::move(m));
+      Instance& inst = out_.instances[instance++];
+      inst.mesh = uint32_t(out_.meshes.size() - 1);
+      inst.material = materials_.material(prim.material, where);
+    }
+    if (unweighted)
+      out_.warnings.push_back(file_ + ": " + p.key + ": " + std::to_string(unweighted) +
+                              " skinned vertices have weights summing to 0: placed by the node's transform");
+  }
+
+  // A primitive as a scene mesh; `deform` (the pose of a skinned or morphed node) runs on its positions and
+  // normals as read, before they are checked and missing or broken normals computed.
+  Mesh convert(const tinygltf::Primitive& prim, int mode, const std::string& where, const std::string& name,
+               const std::function<void(Mesh&)>& deform = {}) {
     auto attribute = [&](const char* semantic) {
       const auto it = prim.attributes.find(semantic);
       return it == prim.attributes.end() ? -1 : it->second;
@@ -287,15 +385,16 @@ class Importer {
     mesh.name = name;
     const int position = attribute("POSITION");
     if (position < 0) fail(where + ".attributes", "no POSITION attribute");
-    mesh.positions = read_.vec3(position, attr + "POSITION");
+    mesh.positions = read_.vec3(position, attr + "POSITION", quantized_);
     if (const int n = attribute("NORMAL"); n >= 0) {
-      mesh.normals = read_.vec3(n, attr + "NORMAL");
+      mesh.normals = read_.vec3(n, attr + "NORMAL", quantized_);
       if (mesh.normals.size() != mesh.positions.size()) fail(attr + "NORMAL", "count differs from POSITION");
     }
+    if (deform) deform(mesh);
     // The set the base-colour texture names (TEXCOORD_0 without one), v turned into GL's t = 1 − v.
     const std::string uv = "TEXCOORD_" + std::to_string(materials_.texcoord_set(prim.material));
     if (const int t = attribute(uv.c_str()); t >= 0) {
-      mesh.texcoords = read_.vec2(t, attr + uv);
+      mesh.texcoords = read_.vec2(t, attr + uv, quantized_);
       if (mesh.texcoords.size() != mesh.positions.size()) fail(attr + uv, "count differs from POSITION");
       for (glm::vec2& c : mesh.texcoords) c.y = 1.0f - c.y;
     } else if (uv != "TEXCOORD_0") {
@@ -403,6 +502,10 @@ class Importer {
   gltf::AccessorReader read_;
   std::map<std::pair<size_t, size_t>, std::optional<std::pair<uint32_t, uint32_t>>> primitives_;
   gltf::GltfMaterials materials_;
+  bool quantized_;                               // the file uses KHR_mesh_quantization
+  std::vector<int> parent_;                      // each node's parent (-1: a root), from walk()
+  std::vector<std::optional<glm::dmat4>> world_;  // each walked node's world transform
+  std::vector<Posed> posed_;                     // skinned or morphed nodes, posed after the walk
 };
 
 }  // namespace

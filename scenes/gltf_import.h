@@ -14,7 +14,9 @@ namespace scenes {
 // - primitives: TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN (points and lines are skipped with a warning),
 //   indexed or not, each one Mesh shared by every node that instances it;
 // - normals: computed (area-weighted) when missing, non-finite or zero ones replaced (with a warning);
-// - skinned meshes: bind pose, placed by their node's transform like any other mesh (the skin is ignored);
+// - skinned and morphed meshes: the default pose (gltf_pose.h: morph targets at their default weights, joints at
+//   their node transforms; a skinned node's own transform ignored), one mesh per such node; no animation;
+// - KHR_mesh_quantization: integer attributes, normalized or not, where the file uses the extension;
 // - materials: baseColorFactor, the base-colour image (its path, relative to the file; or, for an image in a
 //   buffer view or a data: URI, its encoded bytes in Material::embedded_texture), doubleSided; specular
 //   strength 0.3·(1 − roughness), shininess 2/roughness⁴ − 2 clamped to [1, 512];

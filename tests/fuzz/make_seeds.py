@@ -88,6 +88,44 @@ put("fuzz_gltf", "zero_buffer.glb", glb(zero, data))
 nan = struct.pack("<9f", float("nan"), 0, 0, float("inf"), 0, 0, 0, -1e38, 0) + idx + b"\0\0"
 put("fuzz_gltf", "nan.glb", glb(gltf_doc(nan), nan))
 
+# A skinned, morphed triangle (two joints, inverse bind matrices, one morph target at weight 0.5) and a
+# quantized one (normalized SHORT positions under KHR_mesh_quantization): the pose code of gltf_pose.cpp.
+joints = struct.pack("<12B", 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0)
+weights = struct.pack("<12f", 1, 0, 0, 0, 1, 0, 0, 0, 0.5, 0.5, 0, 0)
+ident16 = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
+ibm = struct.pack("<16f", *ident16) + struct.pack("<16f", *(ident16[:12] + [0, -1, 0, 1]))
+morph = struct.pack("<9f", 0, 0, 1, 0, 0, 1, 0, 0, 1)
+skin_data = data + joints + weights + ibm + morph
+def skinned(d):
+    d["buffers"][0]["byteLength"] = len(skin_data)
+    off = len(data)
+    for length, comp, typ in ((12, 5121, "VEC4"), (48, 5126, "VEC4"), (128, 5126, "MAT4"), (36, 5126, "VEC3")):
+        d["bufferViews"].append({"buffer": 0, "byteOffset": off, "byteLength": length})
+        count = 2 if typ == "MAT4" else 3
+        d["accessors"].append({"bufferView": len(d["bufferViews"]) - 1, "componentType": comp, "count": count, "type": typ})
+        off += length
+    prim = d["meshes"][0]["primitives"][0]
+    prim["attributes"].update({"JOINTS_0": 2, "WEIGHTS_0": 3})
+    prim["targets"] = [{"POSITION": 5}]
+    d["meshes"][0]["weights"] = [0.5]
+    d["nodes"][0]["skin"] = 0
+    d["nodes"] += [{"translation": [1, 0, 0], "children": [4]}, {"rotation": [0, 0, 0.7071, 0.7071], "translation": [0, 1, 0]}]
+    d["scenes"][0]["nodes"].append(3)
+    d["skins"] = [{"joints": [3, 4], "inverseBindMatrices": 4}]
+put("fuzz_gltf", "skinned.gltf", json.dumps(gltf_doc(skin_data, "data:application/octet-stream;base64," +
+                                                     base64.b64encode(skin_data).decode(), skinned)))
+put("fuzz_gltf", "skinned.glb", glb(gltf_doc(skin_data, None, skinned), skin_data))
+qpos = struct.pack("<12h", 0, 0, 0, 0, 32767, 0, 0, 0, 0, 32767, 0, 0)
+qdata = qpos + idx + b"\0\0"
+def quantized(d):
+    d["buffers"][0]["byteLength"] = len(qdata)
+    d["bufferViews"][0].update({"byteLength": 24, "byteStride": 8})
+    d["bufferViews"][1]["byteOffset"] = 24
+    d["accessors"][0].update({"componentType": 5122, "normalized": True})
+    d["extensionsUsed"].append("KHR_mesh_quantization")
+    d["extensionsRequired"] = ["KHR_mesh_quantization"]
+put("fuzz_gltf", "quantized.glb", glb(gltf_doc(qdata, None, quantized), qdata))
+
 # JSON scenes beyond docs/examples: the deep-nesting reproducer (cut to what the reader refuses quickly),
 # degenerate and huge geometry, every technique on a small scene.
 def nest(depth):

@@ -4,6 +4,7 @@ list(APPEND SHADOWLAB_TEST_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/builtin_scenes_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/gltf_assets_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/gltf_import_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/scenes/gltf_pose_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/mesh_ops_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/scene_schema_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/primitives_test.cpp
