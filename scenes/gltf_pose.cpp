@@ -62,8 +62,22 @@ std::vector<glm::mat4> joint_matrices(const tinygltf::Model& model, size_t skin,
                        std::to_string(inverse_bind.size()) + " matrices for " + std::to_string(s.joints.size()) +
                            " joints");
   }
+  const auto finite = [](const auto& m) {
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite(m[c][r])) return false;
+    return true;
+  };
   std::vector<glm::mat4> out(s.joints.size());
-  for (size_t j = 0; j < s.joints.size(); ++j) out[j] = glm::mat4(globals[j] * glm::dmat4(inverse_bind[j]));
+  for (size_t j = 0; j < s.joints.size(); ++j) {
+    if (!finite(inverse_bind[j]))
+      throw SceneError(file, key + ".inverseBindMatrices", "matrix " + std::to_string(j) + " holds a value that is not a finite number");
+    if (!finite(globals[j]))
+      throw SceneError(file, key + ".joints", "node " + std::to_string(s.joints[j]) + "'s transform holds a value that is not a finite number");
+    out[j] = glm::mat4(globals[j] * glm::dmat4(inverse_bind[j]));
+    if (!finite(out[j]))
+      throw SceneError(file, key + ".joints", "joint " + std::to_string(j) + "'s matrix overflows a 32-bit float");
+  }
   return out;
 }
 

@@ -3,6 +3,7 @@
 // at the node's and the mesh's default weights, KHR_mesh_quantization attributes, and the errors of each.
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,14 @@ TEST(GltfPose, SkinErrorsNameTheKey) {
     const auto path = file.f.write_gltf(dir, "few");
     EXPECT_EQ(error_of(path), path.string() + ": meshes[0].primitives[0].attributes.JOINTS_0: vertex 1 names joint 1 "
                                               "of a skin with 1");
+  }
+  {
+    SkinFile file;
+    const glm::mat4 bad[2] = {glm::mat4(1.0f), glm::mat4(std::numeric_limits<float>::quiet_NaN())};
+    file.f.doc["skins"][0]["inverseBindMatrices"] = file.f.accessor(bad, sizeof bad, 5126, 2, "MAT4");
+    const auto path = file.f.write_gltf(dir, "nan");
+    EXPECT_EQ(error_of(path), path.string() + ": skins[0].inverseBindMatrices: matrix 1 holds a value that is not a "
+                                              "finite number");
   }
   {
     SkinFile file;
