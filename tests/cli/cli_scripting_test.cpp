@@ -362,6 +362,26 @@ TEST_F(CliScripting, BareGltfModelGetsASunAGroundAndAShadow) {
   testsupport::expect_bad_run(dir, "render tutorial --no-ground --out x.png", "--no-ground", "x.png");
   // The staged sun is a light like any other: --light sun keeps the shadow.
   EXPECT_GT(shadowed("fox/Fox.gltf", "--light sun").first, 150u);
+  // The ground is in the map, which the moment maps need (without it their shadows washed out), and only
+  // receives under projective, whose casters are not shadowed by their own texture.
+  // Each shadows about as many pixels as the classic map (a casting ground blackened the whole fox under
+  // projective: its texture falls on every receiver behind it).
+  const size_t classic = shadowed("fox/Fox.gltf", "--technique shadowmap").first;
+  for (const char* t : {"vsm", "esm", "projective"}) {
+    const auto [n, err] = shadowed("fox/Fox.gltf", std::string("--technique ") + t);
+    EXPECT_NEAR(double(n), double(classic), 0.2 * double(classic)) << t;
+    EXPECT_THAT(err, ::testing::Not(::testing::HasSubstr("warning"))) << t;
+  }
+  // eval scores each on the scene it renders: the shadow found, against the same reference.
+  const Outcome er = shadowlab(dir, "eval '" + (testsupport::assets_dir() / "fox/Fox.gltf").string() +
+                                        "' --techniques shadowmap,esm,projective --size 160x90 --out ev");
+  ASSERT_EQ(er.code, 0) << er.err;
+  const nlohmann::json ev = nlohmann::json::parse(testsupport::slurp(dir / "ev" / "eval.json"));
+  ASSERT_EQ(ev.at("results").size(), 3u);
+  for (const nlohmann::json& row : ev.at("results")) {
+    EXPECT_LT(row.at("false_lit_pct").get<double>(), 2.0) << row.at("technique");
+    EXPECT_LT(row.at("false_shadowed_pct").get<double>(), 2.0) << row.at("technique");
+  }
 }
 
 // --light NAME|INDEX renders one light alone: the same frame as a scene file holding only that light, by name or
