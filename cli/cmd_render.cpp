@@ -102,7 +102,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
     const auto [az, el] = parse_float_pair(a.sun, "--sun", "AZ,EL");
     stage.sun = glm::vec2(az, el);
   }
-  stage.z_up = a.up == "z";
+  stage.up = up_axis(a.up);
   stage.ground_casts = a.technique != "projective";
   stage.camera_chosen = a.camera.rfind("orbit:", 0) == 0;
   std::vector<std::string> notes;

@@ -65,6 +65,15 @@ std::vector<frame::AovChannel> parse_aov_list(const std::string& list, const std
 }
 
 // Every check of a job's arguments that needs no rendering, so a bad job (or batch line) fails before any work.
+scenes::StageOptions::Up up_axis(const std::string& up) {
+  using Up = scenes::StageOptions::Up;
+  if (up == "y") return Up::y;
+  if (up == "z") return Up::z;
+  if (up == "-y") return Up::minus_y;
+  if (up == "-z") return Up::minus_z;
+  throw CliError("--up", "expected y, z, -y or -z, got '" + up + "'");
+}
+
 void check_job(const RenderArgs& a) {
   parse_size(a.size, "--size");
   check_name(a.technique, "--technique", "technique", scenes::parse_technique(a.technique).has_value(),
@@ -90,7 +99,7 @@ void check_job(const RenderArgs& a) {
       for (const scenes::BuiltinInfo& b : scenes::list_builtin_scenes()) animated |= b.name == a.scene && b.animated;
     if (!animated) throw CliError("--animate", "'" + a.scene + "' is not an animated built-in scene (animated: projective)");
   }
-  if (a.up != "y" && a.up != "z") throw CliError("--up", "expected y or z, got '" + a.up + "'");
+  up_axis(a.up);
   if (!a.sun.empty()) {
     const auto [az, el] = parse_float_pair(a.sun, "--sun", "AZ,EL");
     if (!(el > 0.0f && el <= 90.0f)) throw CliError("--sun", "expected AZ,EL with an elevation above 0 and at most 90 degrees");
@@ -244,7 +253,8 @@ void add_render_options(CLI::App& command, const std::shared_ptr<RenderArgs>& ar
                          "A glTF model with no lights gets a ground plane and a sun (the default)");
   app->add_flag_callback("--no-ground", [args] { args->ground = false; }, "No ground plane under a bare glTF model");
   app->add_option("--sun", args->sun, "AZ,EL: the sun a glTF model with no lights gets (default: 105 degrees round from the camera, 50 up)");
-  app->add_option("--up", args->up, "y|z: a glTF model's up axis (z: rotated to +Y; default y)");
+  app->add_option("--up", args->up,
+                  "y|z|-y|-z: a glTF model's up axis, turned to +Y (default y; write --up=-y for the negative ones)");
   app->add_option("--camera", args->camera,
                   "NAME, INDEX or orbit:AZ,EL[,DIST]: the camera (orbit: around the casters, framed when DIST is left out)");
   app->add_option("--light", args->light,

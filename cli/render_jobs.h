@@ -15,6 +15,7 @@
 #include "cli/look_options.h"
 #include "cli/shadow_options.h"
 #include "scenes/frame/surface_record.h"
+#include "scenes/stage.h"
 #include "shading/techniques/vocabulary.h"
 #include "raster/simd/isa.h"
 
@@ -53,6 +54,9 @@ std::string option_for_field(const std::string& field);
 std::vector<frame::AovChannel> parse_aov_list(const std::string& list, const std::string& out);
 // Every check of a job's arguments that needs no rendering, so a bad job (or batch line) fails before any work.
 void check_job(const RenderArgs& a);
+
+// --up's value as the staging's axis: y, z, -y or -z; anything else is a CliError on --up.
+scenes::StageOptions::Up up_axis(const std::string& up);
 // One job's arguments from `parse` (which runs a parser holding the render options over a command line): one
 // scene, and none of the top-level-only options. Errors are CliErrors on `where`.
 RenderArgs parse_job(const std::string& where, const std::function<void(CLI::App&)>& parse);

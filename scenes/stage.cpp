@@ -30,7 +30,13 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
   ObjectDesc model;
   model.name = desc.name;
   model.source = GltfRef{path.filename().string()};
-  if (options.z_up) model.transform.rotate_deg = glm::vec3(-90.0f, 0.0f, 0.0f);
+  // Rotations about X taking the model's up to +Y: +Z by −90°, −Z by +90°, −Y by 180° (a turn, not a mirror).
+  switch (options.up) {
+    case StageOptions::Up::y: break;
+    case StageOptions::Up::z: model.transform.rotate_deg = glm::vec3(-90.0f, 0.0f, 0.0f); break;
+    case StageOptions::Up::minus_y: model.transform.rotate_deg = glm::vec3(180.0f, 0.0f, 0.0f); break;
+    case StageOptions::Up::minus_z: model.transform.rotate_deg = glm::vec3(90.0f, 0.0f, 0.0f); break;
+  }
   desc.objects.push_back(model);
   BuildContext context{path.parent_path(), path.string()};
   context.wraps_model = true;

@@ -23,7 +23,10 @@ struct StageOptions {
   // Azimuth (from +Z towards +X) and elevation, degrees; default: kStageSunAzimuth degrees round from the
   // camera's azimuth, kStageSunElevation up.
   std::optional<glm::vec2> sun;
-  bool z_up = false;                 // the model's up axis is +Z: rotated so that it is +Y
+  // The model's up axis, rotated to +Y: +Y (as glTF specifies), +Z (CAD and Blender exports without the
+  // conversion), −Y (files authored in Vulkan's y-down clip convention), −Z.
+  enum class Up : uint8_t { y, z, minus_y, minus_z };
+  Up up = Up::y;
   bool camera_chosen = false;        // the caller picks its own camera: the framing camera is added unannounced
 };
 

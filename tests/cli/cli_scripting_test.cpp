@@ -359,6 +359,11 @@ TEST_F(CliScripting, BareGltfModelGetsASunAGroundAndAShadow) {
   // Staging options on a scene that is not a bare model would do nothing: refused.
   testsupport::expect_bad_run(dir, "render tutorial --sun 90,40 --out x.png", "--sun", "x.png");
   testsupport::expect_bad_run(dir, "render tutorial --up z --out x.png", "--up", "x.png");
+  testsupport::expect_bad_run(dir, "render tutorial --up -y --out x.png", "--up", "x.png");
+  const Outcome w = shadowlab(dir, "render tutorial --up w --out x.png");
+  EXPECT_EQ(w.err, "shadowlab: error: --up: expected y, z, -y or -z, got 'w'\n");
+  // A Y-down model (the Vulkan samples' scene) stands on the ground once turned: its shadow falls there.
+  EXPECT_GT(shadowed("vulkan_subpass_scene/subpass_scene_opaque.gltf", "--up=-y").first, 120u);
   testsupport::expect_bad_run(dir, "render tutorial --no-ground --out x.png", "--no-ground", "x.png");
   // The staged sun is a light like any other: --light sun keeps the shadow.
   EXPECT_GT(shadowed("fox/Fox.gltf", "--light sun").first, 150u);

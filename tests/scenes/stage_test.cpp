@@ -106,7 +106,7 @@ TEST(Stage, ModelsOfAnySizeAreFramedAlike) {
 TEST(Stage, ZUpModelIsTurnedUpright) {
   const auto dir = testsupport::temp_dir("stage_zup");
   scenes::StageOptions o;
-  o.z_up = true;
+  o.up = scenes::StageOptions::Up::z;
   const scenes::StagedScene s = scenes::load_model_staged(write_box(dir, "box", false), o);
   ASSERT_EQ(s.scene.staged_ground, std::optional<uint32_t>(1));
   const scenes::Aabb m = scenes::object_bounds(s.scene, 0);  // the model
@@ -114,6 +114,27 @@ TEST(Stage, ZUpModelIsTurnedUpright) {
   EXPECT_NEAR(m.max.z - m.min.z, 2.0f, 1e-5f);
   EXPECT_NEAR(m.max.x - m.min.x, 1.0f, 1e-5f);
   EXPECT_NEAR(scenes::scene_bounds(s.scene).min.y, m.min.y, 1e-5f);  // the ground's top at the model's base
+}
+
+// Every --up axis: the model's own up direction becomes +Y by a rotation (no mirror), the ground under it.
+TEST(Stage, EachUpAxisTurnsTheModelUpright) {
+  const auto dir = testsupport::temp_dir("stage_up");
+  const auto file = write_box(dir, "box", false);
+  using Up = scenes::StageOptions::Up;
+  for (const auto& [up, axis] : {std::pair{Up::y, glm::vec3(0, 1, 0)}, std::pair{Up::z, glm::vec3(0, 0, 1)},
+                                 std::pair{Up::minus_y, glm::vec3(0, -1, 0)}, std::pair{Up::minus_z, glm::vec3(0, 0, -1)}}) {
+    scenes::StageOptions o;
+    o.up = up;
+    const scenes::StagedScene s = scenes::load_model_staged(file, o);
+    const glm::mat3 turn(s.scene.instances.at(0).transform);
+    const glm::vec3 v = turn * axis;
+    EXPECT_NEAR(v.x, 0.0f, 1e-5f) << int(up);
+    EXPECT_NEAR(v.y, 1.0f, 1e-5f) << int(up);
+    EXPECT_NEAR(v.z, 0.0f, 1e-5f) << int(up);
+    EXPECT_NEAR(glm::determinant(turn), 1.0f, 1e-5f) << int(up);
+    const scenes::Aabb m = scenes::object_bounds(s.scene, 0);
+    EXPECT_NEAR(scenes::scene_bounds(s.scene).min.y, m.min.y, 1e-5f) << int(up);  // the ground under it
+  }
 }
 
 // A file with its own light is shown as it is: no sun and no ground; a sun below the horizon is refused.
