@@ -134,6 +134,21 @@ frame::FrameConfig combo_config(const frame::FrameConfig& base, const Combinatio
   return config;
 }
 
+// What a light was rendered with in a combination, where the label says "scene" (the light's own): the
+// technique, the filter and bias where the technique reads them (null otherwise), the map size (0 for none) and
+// the depth format of the maps that hold depths (null for none, projective's caster masks and irregular).
+nlohmann::json used_json(const frame::ResolvedLight& used) {
+  const tech::ShadowConfig& c = used.config;
+  const tech::TechniqueInfo& info = tech::info(c.technique);
+  const bool biased = c.technique != tech::Technique::none && c.technique != tech::Technique::projective &&
+                      c.technique != tech::Technique::irregular;
+  return {{"used_technique", std::string(info.name)},
+          {"used_filter", info.reads_filter ? nlohmann::json(std::string(tech::to_string(c.filter))) : nlohmann::json()},
+          {"used_bias", biased ? nlohmann::json(std::string(tech::to_string(c.bias.mode))) : nlohmann::json()},
+          {"used_map_size", c.technique == tech::Technique::none ? 0 : c.map_size},
+          {"used_depth_format", biased ? nlohmann::json(std::string(tech::to_string(c.depth_format))) : nlohmann::json()}};
+}
+
 // One row: a combination's score for one light.
 nlohmann::json row_json(const scenes::Scene& scene, const Combination& c, size_t light,
                         const reference::LightScore& s, const frame::FrameStats& stats, double score_ms) {
@@ -303,6 +318,8 @@ int run_eval(const EvalArgs& a) {
       for (size_t l = 0; l < sf.score.lights.size(); ++l) {
         rows.push_back(row_json(scene, c, l, sf.score.lights[l], sf.frame.stats, sf.score_ms));
         rows.back()["index"] = k;
+        const nlohmann::json used = used_json(frame::resolve_light(v.scene->lights[l], l, config));
+        rows.back().update(used);
         rows.back()["shimmer_camera_pct"] = nullptr;
         rows.back()["shimmer_light_pct"] = nullptr;
         for (size_t m = 0; m < v.motions.size(); ++m) rows.back()[v.motions[m].column] = shimmers[m][l].percent();
@@ -312,8 +329,14 @@ int run_eval(const EvalArgs& a) {
         rows.back()["aliasing_p95"] = measured ? nlohmann::json(al->p95) : nlohmann::json(nullptr);
         rows.back()["aliasing_mean"] = measured ? nlohmann::json(al->mean) : nlohmann::json(nullptr);
         const reference::LightScore& s = sf.score.lights[l];
-        std::printf("%s light%zu: false-shadowed %.3f%% (near %.3f%%), false-lit %.3f%% (near %.3f%%), mean |S-V| %.4f\n",
-                    c.label().c_str(), l, s.percent(s.false_shadowed()), s.percent(s.false_shadowed_near),
+        // The settings the label leaves to the scene, said after it: "scene-scene-scene-scene (shadowmap pcf slope 2048 d24)".
+        std::string said = used.at("used_technique").get<std::string>();
+        for (const char* k : {"used_filter", "used_bias"})
+          if (!used.at(k).is_null()) said += " " + used.at(k).get<std::string>();
+        if (used.at("used_map_size").get<int>() > 0) said += " " + std::to_string(used.at("used_map_size").get<int>());
+        if (!used.at("used_depth_format").is_null()) said += " " + used.at("used_depth_format").get<std::string>();
+        std::printf("%s (%s) light%zu: false-shadowed %.3f%% (near %.3f%%), false-lit %.3f%% (near %.3f%%), mean |S-V| %.4f\n",
+                    c.label().c_str(), said.c_str(), l, s.percent(s.false_shadowed()), s.percent(s.false_shadowed_near),
                     s.percent(s.false_lit()), s.percent(s.false_lit_near), s.mean_abs_error);
       }
       // The sheet shows the first light's aliasing heat map where it was measured.

@@ -15,7 +15,8 @@ SHADOWLAB_ISA_BEGIN
 namespace {
 
 const char* const kColumns[] = {"index", "combination", "technique", "filter", "bias", "map_size", "light",
-                                "light_name", "scored_pixels", "unreached_pixels", "false_shadowed_pct", "false_shadowed_near_pct",
+                                "light_name", "used_technique", "used_filter", "used_bias", "used_map_size",
+                                "used_depth_format", "scored_pixels", "unreached_pixels", "false_shadowed_pct", "false_shadowed_near_pct",
                                 "false_shadowed_elsewhere_pct", "false_lit_pct", "false_lit_near_pct",
                                 "false_lit_elsewhere_pct", "false_shadowed_pixels", "false_lit_pixels",
                                 "mean_abs_error", "largest_false_lit_group", "longest_false_lit_run", "map_pass_ms",

@@ -196,6 +196,35 @@ TEST_F(EvalCli, ShardsMergeIntoTheWholeSweep) {
   expect_bad("eval-merge s0 s1 foreign_row --out m2", "foreign_row/eval.json: results[0].combination", "m2");
 }
 
+// Where a label says "scene" (the light's own setting), the row says what the light was rendered with: the
+// built-in tutorial's sun is a 2048² d16 map, PCF, slope bias; --sizes and --depth-format replace theirs; esm
+// reads no filter (null) and brings its d32f, irregular reads neither bias nor depth format.
+TEST_F(EvalCli, RowsSayWhatEachLightWasRenderedWith) {
+  const Outcome r = shadowlab(dir, "eval tutorial --techniques shadowmap,esm,irregular --size 64x36 --out used");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("shadowmap-scene-scene-scene (shadowmap pcf slope 2048 d16) light0: "));
+  const nlohmann::json j = nlohmann::json::parse(testsupport::slurp(dir / "used" / "eval.json"));
+  ASSERT_EQ(j.at("results").size(), 3u);
+  const auto& classic = j.at("results")[0], esm = j.at("results")[1], irregular = j.at("results")[2];
+  EXPECT_EQ(classic.at("map_size"), 0);  // the sweep's own column: the scene's
+  EXPECT_EQ(classic.at("used_technique"), "shadowmap");
+  EXPECT_EQ(classic.at("used_filter"), "pcf");
+  EXPECT_EQ(classic.at("used_bias"), "slope");
+  EXPECT_EQ(classic.at("used_map_size"), 2048);
+  EXPECT_EQ(classic.at("used_depth_format"), "d16");
+  EXPECT_TRUE(esm.at("used_filter").is_null());
+  EXPECT_EQ(esm.at("used_bias"), "slope");
+  EXPECT_EQ(esm.at("used_depth_format"), "d32f");  // the sun's d16 is the classic default: esm brings its own
+  EXPECT_TRUE(irregular.at("used_bias").is_null());
+  EXPECT_TRUE(irregular.at("used_depth_format").is_null());
+  const std::string csv = testsupport::slurp(dir / "used" / "eval.csv");
+  EXPECT_NE(csv.find(",light_name,used_technique,used_filter,used_bias,used_map_size,used_depth_format,"), std::string::npos);
+  ASSERT_EQ(shadowlab(dir, "eval tutorial --techniques shadowmap --sizes 512 --depth-format d24 --size 64x36 --out used2").code, 0);
+  const nlohmann::json k = nlohmann::json::parse(testsupport::slurp(dir / "used2" / "eval.json"));
+  EXPECT_EQ(k.at("results")[0].at("used_map_size"), 512);
+  EXPECT_EQ(k.at("results")[0].at("used_depth_format"), "d24");
+}
+
 // The shadow settings render takes apply to every combination of a sweep whose lights read them: --esm-c changes
 // the esm rows and leaves the classic map's rows as they were; a setting no combination reads is refused.
 TEST_F(EvalCli, SweepTakesShadowSettings) {
