@@ -98,10 +98,14 @@ void check_output_dir(const std::string& file, const std::string& option) {
     throw CliError(option, "directory " + parent.string() + " does not exist");
 }
 
+namespace {
+
 bool is_model_file(const std::filesystem::path& p) {
   const std::string e = lower_extension(p);
   return e == ".gltf" || e == ".glb";
 }
+
+}  // namespace
 
 void check_scene_exists(const std::string& name) {
   const std::filesystem::path path(name);

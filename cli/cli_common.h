@@ -126,8 +126,6 @@ void make_folder(scenes::io::WriteBatch& batch, const std::filesystem::path& dir
 
 // A file's lower-case extension with its dot (".exr"), for format decisions.
 std::string lower_extension(const std::filesystem::path& path);
-// A .gltf or .glb name (a file render and eval stage: scenes/stage.h).
-bool is_model_file(const std::filesystem::path& path);
 
 SHADOWLAB_ISA_END
 }  // namespace cli

@@ -218,15 +218,16 @@ int run_eval(const EvalArgs& a) {
   const scenes::StageOptions stage;
   std::vector<std::string> notes;
   scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
+  const std::optional<size_t> chosen_light = choose_light(scene, a.light);
+  // The same scene (its light chosen) with the staged ground receiving only, where a ground was staged.
   std::optional<scenes::Scene> receivers_scene;
   bool projective = false;
   for (const auto& t : techniques) projective |= t == tech::Technique::projective;
-  if (std::error_code ec; projective && is_model_file(a.scene) && std::filesystem::is_regular_file(a.scene, ec)) {
-    scenes::StageOptions receivers = stage;
-    receivers.ground_casts = false;
-    receivers_scene.emplace(scenes::load_model_staged(a.scene, receivers).scene);
+  if (projective && scene.staged_ground) {
+    receivers_scene.emplace(scene);
+    for (scenes::Instance& inst : receivers_scene->instances)
+      if (inst.object == *scene.staged_ground) inst.casts_shadows = false;
   }
-  const std::optional<size_t> chosen_light = choose_light(scene, a.light);
   const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);  // once for the sweep
   print_notes(notes);
   raster::Renderer renderer(check_threads(a.threads));
@@ -308,7 +309,9 @@ int run_eval(const EvalArgs& a) {
       config.aliasing = true;  // measured where the technique has a measure (frame/aliasing.h)
       const Variant& v = receivers && c.technique == tech::Technique::projective ? *receivers : main;
       const reference::ScoredFrame sf = reference::score_config(*v.scene, config, renderer, v.ref, options, &textures);
-      print_frame_warnings(a.scene, sf.frame.warnings, warned);
+      std::vector<std::string> warnings;  // named by the light's place in the file, as errors are
+      for (const std::string& w : sf.frame.warnings) warnings.push_back(light_field(w, chosen_light));
+      print_frame_warnings(a.scene, warnings, warned);
       std::vector<std::vector<reference::LightShimmer>> shimmers;
       for (const Moved& m : v.motions) {
         const reference::ScoredFrame moved = reference::score_config(m.scene, config, renderer, *m.ref, options, &textures);

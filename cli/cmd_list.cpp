@@ -92,9 +92,12 @@ int run_list(bool json) {
   }
   for (const scenes::BuiltinInfo& s : scenes::list_builtin_scenes()) print_line("scene", s.name, s.description);
   for (const tech::TechniqueInfo& t : tech::kTechniques) {
-    // The map a light of this technique gets when the scene gives none (`none` builds no map).
-    const std::string map = t.map_size == 0 ? std::string()
-                                            : "; map " + std::to_string(t.map_size) + "² " + std::string(tech::to_string(t.depth_format));
+    // The map a light of this technique gets when the scene gives none (`none` builds no map; the irregular
+    // z-buffer, which stores no depths, takes map_size as its grid's largest side).
+    const std::string size = std::to_string(t.map_size) + "²";
+    const std::string map = t.map_size == 0      ? std::string()
+                            : t.encoding.empty() ? "; grid of at most " + size + " cells"
+                                                 : "; map " + size + " " + std::string(tech::to_string(t.depth_format));
     const std::string line = std::string(t.description) + " [lights: " + tech::light_names(t.lights) + map +
                              (t.built ? "]" : "; not built yet]");
     print_line("technique", t.name, line);

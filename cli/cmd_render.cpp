@@ -160,7 +160,9 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
       if (where.rfind("--", 0) != 0 && std::filesystem::is_regular_file(a.scene, ec)) where = a.scene + ": " + where;
       throw CliError(where, what.substr(colon + 2));
     }
-    print_frame_warnings(a.scene, result->warnings, warned);
+    std::vector<std::string> warnings;  // named by the light's place in the file, as errors are
+    for (const std::string& w : result->warnings) warnings.push_back(light_field(w, chosen_light));
+    print_frame_warnings(a.scene, warnings, warned);
     const double total = watch.ms();
     if (text && a.stats) {
       const frame::FrameStats& s = result->stats;

@@ -130,8 +130,13 @@ void AccessorReader::read(int index, const std::string& key, int type, Want want
   if (want == Want::unsigned_small && ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
       ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
     fail(where, "expected UNSIGNED_BYTE or UNSIGNED_SHORT components");
+  const bool small_signed = ct == TINYGLTF_COMPONENT_TYPE_BYTE || ct == TINYGLTF_COMPONENT_TYPE_SHORT;
   if (want == Want::quantized && ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
     fail(where, "expected FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT components");
+  if (want == Want::quantized_normal && !is_float && !(small_signed && a.normalized))
+    fail(where, "expected FLOAT or normalized BYTE or SHORT components (KHR_mesh_quantization)");
+  if (want == Want::quantized_signed && !is_float && !small_signed)
+    fail(where, "expected FLOAT, BYTE or SHORT components (KHR_mesh_quantization)");
   if (a.count > kMaxElements) fail(where, "count " + std::to_string(a.count) + " is too large");
   const size_t element = n * csize;
 
@@ -199,8 +204,12 @@ std::vector<Element> AccessorReader::read_all(int accessor, const std::string& k
   return out;
 }
 
-std::vector<glm::vec3> AccessorReader::vec3(int accessor, const std::string& key, bool quantized) const {
-  return read_all<glm::vec3, float>(accessor, key, TINYGLTF_TYPE_VEC3, quantized ? Want::quantized : Want::floats);
+std::vector<glm::vec3> AccessorReader::vec3(int accessor, const std::string& key, Quantized quantized) const {
+  const Want want = quantized == Quantized::position          ? Want::quantized
+                    : quantized == Quantized::normal          ? Want::quantized_normal
+                    : quantized == Quantized::target_position ? Want::quantized_signed
+                                                              : Want::floats;
+  return read_all<glm::vec3, float>(accessor, key, TINYGLTF_TYPE_VEC3, want);
 }
 
 std::vector<glm::vec2> AccessorReader::vec2(int accessor, const std::string& key, bool quantized) const {

@@ -15,10 +15,14 @@ class AccessorReader {
  public:
   AccessorReader(const tinygltf::Model& model, std::string file) : model_(model), file_(std::move(file)) {}
 
-  // VEC3 of FLOAT (positions, normals, morph targets' displacements); with `quantized` (a file that uses
-  // KHR_mesh_quantization) also BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT, normalized or not.
-  std::vector<glm::vec3> vec3(int accessor, const std::string& key, bool quantized = false) const;
-  // VEC2 of FLOAT, or normalized UNSIGNED_BYTE / UNSIGNED_SHORT (texture coordinates); with `quantized` as vec3.
+  // What an attribute may hold in a file that uses KHR_mesh_quantization, beside FLOAT: a position or a texture
+  // coordinate BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT, normalized or not; a normal (and a morph target's
+  // normal) normalized BYTE or SHORT; a morph target's position BYTE or SHORT, normalized or not.
+  enum class Quantized { no, position, normal, target_position };
+  // VEC3 of FLOAT (positions, normals, morph targets' displacements), or what `quantized` allows.
+  std::vector<glm::vec3> vec3(int accessor, const std::string& key, Quantized quantized = Quantized::no) const;
+  // VEC2 of FLOAT, or normalized UNSIGNED_BYTE / UNSIGNED_SHORT (texture coordinates); with `quantized`
+  // (Quantized::position) any of a quantized position's types.
   std::vector<glm::vec2> vec2(int accessor, const std::string& key, bool quantized = false) const;
   // SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT (indices).
   std::vector<uint32_t> indices(int accessor, const std::string& key) const;
@@ -30,7 +34,8 @@ class AccessorReader {
   std::vector<glm::mat4> mat4(int accessor, const std::string& key) const;
 
  private:
-  enum class Want { floats, floats_or_normalized, unsigned_ints, unsigned_small, quantized };
+  enum class Want { floats, floats_or_normalized, unsigned_ints, unsigned_small, quantized, quantized_normal,
+                    quantized_signed };
   // Flat components of an accessor of `type` (sparse values applied) into alloc(count), which returns room
   // for count × components values; called only after every bound is checked, so nothing is allocated for a
   // count the buffers cannot hold.

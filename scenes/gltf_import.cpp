@@ -358,10 +358,13 @@ class Importer {
         skip(mode, where);
         continue;
       }
+      // A skinned mesh is posed in world space under an identity instance, so build_scene() cannot see a
+      // mirroring node: its winding is flipped here, by the node's global transform (glTF §3.7.4).
+      const bool mirrored = node.skin >= 0 && glm::determinant(glm::mat3(p.world)) < 0.0f;
       Mesh m = convert(prim, mode, where, mesh.name, [&](Mesh& raw) {
         if (!weights.empty()) gltf::apply_morph_targets(prim, weights, read_, quantized_, file_, where, raw);
         if (node.skin >= 0) unweighted += gltf::apply_skin(prim, joints, p.world, read_, file_, where, raw);
-      });
+      }, mirrored);
       out_.meshes.push_back(std::move(m));
       Instance& inst = out_.instances[instance++];
       inst.mesh = uint32_t(out_.meshes.size() - 1);
@@ -375,7 +378,7 @@ class Importer {
   // A primitive as a scene mesh; `deform` (the pose of a skinned or morphed node) runs on its positions and
   // normals as read, before they are checked and missing or broken normals computed.
   Mesh convert(const tinygltf::Primitive& prim, int mode, const std::string& where, const std::string& name,
-               const std::function<void(Mesh&)>& deform = {}) {
+               const std::function<void(Mesh&)>& deform = {}, bool flip = false) {
     auto attribute = [&](const char* semantic) {
       const auto it = prim.attributes.find(semantic);
       return it == prim.attributes.end() ? -1 : it->second;
@@ -385,9 +388,10 @@ class Importer {
     mesh.name = name;
     const int position = attribute("POSITION");
     if (position < 0) fail(where + ".attributes", "no POSITION attribute");
-    mesh.positions = read_.vec3(position, attr + "POSITION", quantized_);
+    using Quantized = gltf::AccessorReader::Quantized;
+    mesh.positions = read_.vec3(position, attr + "POSITION", quantized_ ? Quantized::position : Quantized::no);
     if (const int n = attribute("NORMAL"); n >= 0) {
-      mesh.normals = read_.vec3(n, attr + "NORMAL", quantized_);
+      mesh.normals = read_.vec3(n, attr + "NORMAL", quantized_ ? Quantized::normal : Quantized::no);
       if (mesh.normals.size() != mesh.positions.size()) fail(attr + "NORMAL", "count differs from POSITION");
     }
     if (deform) deform(mesh);
@@ -413,6 +417,7 @@ class Importer {
     if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) indices = strip_to_list(indices);
     else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) indices = fan_to_list(indices);
     mesh.indices = std::move(indices);
+    if (flip) flip_winding(mesh);  // before normals are computed from the winding
     if (auto problem = mesh_problem(mesh)) fail(where, *problem);
     if (const size_t fixed = repair_normals(mesh))
       out_.warnings.push_back(file_ + ": " + attr + "NORMAL: " + std::to_string(fixed) +

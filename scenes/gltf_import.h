@@ -23,7 +23,8 @@ namespace scenes {
 // - cameras: position, target (one metre along −Z) and up from the node; a missing zfar becomes 1000·znear;
 // - lights: direction −Z of the node, spot cone half-angles in degrees, default shadow settings per type.
 // Every instance belongs to object 0, named after the file. Winding is as stored: build_scene() (and so
-// load_scene()) is what flips mirrored instances. Throws SceneError on any problem; nothing partial.
+// load_scene()) is what flips mirrored instances; only a skinned mesh under a mirroring node, posed in world
+// space, is flipped here. Throws SceneError on any problem; nothing partial.
 Scene import_gltf(const std::filesystem::path& path, const std::string& label = {});
 
 }  // namespace scenes

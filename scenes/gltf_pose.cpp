@@ -39,7 +39,10 @@ void apply_morph_targets(const tinygltf::Primitive& prim, const std::vector<doub
     const auto add = [&](const char* semantic, std::vector<glm::vec3>& values) {
       const int a = attribute(prim.targets[t], semantic);
       if (a < 0 || values.empty()) return;
-      const std::vector<glm::vec3> d = read.vec3(a, key + semantic, quantized);
+      using Quantized = AccessorReader::Quantized;
+      const Quantized q = !quantized ? Quantized::no
+                          : std::string(semantic) == "POSITION" ? Quantized::target_position : Quantized::normal;
+      const std::vector<glm::vec3> d = read.vec3(a, key + semantic, q);
       if (d.size() != values.size())
         throw SceneError(file, key + semantic, "count " + std::to_string(d.size()) + " differs from POSITION's " +
                                                    std::to_string(values.size()));

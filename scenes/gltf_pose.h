@@ -26,7 +26,8 @@ void apply_morph_targets(const tinygltf::Primitive& prim, const std::vector<doub
                          const std::string& where, Mesh& mesh);
 
 // A skin's joint matrices: globalTransform(joint) · inverseBindMatrix(joint), in the skin's joint order
-// (identity bind matrices where the skin gives none). `globals` holds each joint node's world transform, in the
+// (identity bind matrices where the skin gives none, as glTF allows; tinygltf 2.8, the loader, refuses a skin
+// without them before this runs). `globals` holds each joint node's world transform, in the
 // same order (the caller has checked the joints exist).
 std::vector<glm::mat4> joint_matrices(const tinygltf::Model& model, size_t skin, const AccessorReader& read,
                                       const std::string& file, const std::vector<glm::dmat4>& globals);

@@ -216,8 +216,14 @@ std::optional<std::string> unread_override(const std::vector<ResolvedLight>& lig
 std::optional<std::string> moment_receiver_warning(const ResolvedLight& light, size_t index, const scenes::Scene& scene) {
   using shading::tech::Technique;
   const Technique t = light.config.technique;
-  const bool moments = t == Technique::esm || t == Technique::vsm || t == Technique::evsm2 || t == Technique::evsm4 ||
-                       ((t == Technique::cascades || t == Technique::cube) && shading::tech::moments_param(light.config));
+  bool moments = t == Technique::esm || t == Technique::vsm || t == Technique::evsm2 || t == Technique::evsm4;
+  if (t == Technique::cascades || t == Technique::cube) {
+    try {
+      moments = shading::tech::moments_param(light.config).has_value();
+    } catch (const shading::tech::TechniqueError&) {
+      return std::nullopt;  // a bad `moments` setting: the technique's planning says so, as a FrameError
+    }
+  }
   if (!moments) return std::nullopt;
   // An object counts when some instance of it receives and none of it casts.
   std::vector<char> casts(scene.objects.size(), 0), receives(scene.objects.size(), 0);

@@ -129,7 +129,7 @@ TEST_F(Cli, ListNamesScenesAndTables) {
   EXPECT_THAT(r.out, ::testing::ContainsRegex("scene +tutorial +[^\n]+"));
   EXPECT_THAT(r.out, ::testing::ContainsRegex("technique +shadowmap"));
   EXPECT_THAT(r.out, ::testing::HasSubstr("[lights: directional, spot; map 1024² d16]"));  // shadowmap's defaults
-  EXPECT_THAT(r.out, ::testing::HasSubstr("[lights: directional, spot, point; map 4096² d32f]"));  // irregular's
+  EXPECT_THAT(r.out, ::testing::HasSubstr("[lights: directional, spot, point; grid of at most 4096² cells]"));  // irregular's
   EXPECT_THAT(r.out, ::testing::ContainsRegex("technique +none +[^\n]+\\[lights: [a-z, ]+\\]"));  // no map
   EXPECT_THAT(r.out, ::testing::ContainsRegex("filter +pcf"));
   EXPECT_EQ(shadowlab(dir, "--help").code, 0);

@@ -14,6 +14,7 @@
 #include "scenes/io/exr_image.h"
 #include "shading/techniques/vocabulary.h"
 #include "tests/cli/cli_run.h"
+#include "tests/scenes/gltf_fixture.h"
 #include "tests/support.h"
 
 namespace {
@@ -194,6 +195,30 @@ TEST_F(EvalCli, ShardsMergeIntoTheWholeSweep) {
   expect_bad("eval-merge s0 s1 no_column --out m2", "no_column/eval.json: results[0]", "m2");
   damaged("foreign_row", [](auto& j) { j["results"][0]["index"] = 1; });  // combination 1 is shard 1's
   expect_bad("eval-merge s0 s1 foreign_row --out m2", "foreign_row/eval.json: results[0].combination", "m2");
+}
+
+// A glTF with its own lights (no staged ground): `eval --light 1` with projective scores light 1 alone, named
+// (the sweep once read past the chosen light's scene for projective rows).
+TEST_F(EvalCli, PickedLightOfAGltfWithProjective) {
+  testsupport::GltfFixture f;
+  const std::vector<glm::vec3> quad = {{-3, 0, -3}, {3, 0, -3}, {-3, 0, 3}, {3, 0, 3}};
+  const std::vector<glm::vec3> box = {{0, 1, 0}, {1, 1, 0}, {0, 1, 1}, {1, 1, 1}};
+  f.node({{"mesh", f.mesh(f.positions(quad), f.indices({0, 2, 1, 1, 2, 3}))}});
+  f.node({{"mesh", f.mesh(f.positions(box), f.indices({0, 2, 1, 1, 2, 3}))}});
+  f.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  f.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"name", "sun"}, {"type", "directional"}, {"intensity", 3}},
+                                                          {{"name", "lamp"}, {"type", "point"}, {"intensity", 100}}};
+  f.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"rotation", {-0.7071, 0, 0, 0.7071}}});
+  f.node({{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}, {"translation", {0.5, 4, 0.5}}});
+  f.write_gltf(dir, "lit");
+  const Outcome r = shadowlab(dir, "eval lit.gltf --techniques projective,cube --light 1 --size 64x48 --out lit");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(testsupport::slurp(dir / "lit" / "eval.json"));
+  ASSERT_EQ(j.at("results").size(), 2u);
+  for (const nlohmann::json& row : j.at("results")) {
+    EXPECT_EQ(row.at("light"), 0);
+    EXPECT_EQ(row.at("light_name"), "lamp");
+  }
 }
 
 // Where a label says "scene" (the light's own setting), the row says what the light was rendered with: the

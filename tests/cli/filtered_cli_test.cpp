@@ -25,6 +25,22 @@ TEST(CliFiltered, EachTechniqueRendersTheTutorial) {
   }
 }
 
+// A bad `moments` setting on a light picked by --light is named by the light's place in the file, with the
+// file, before anything renders (the frame's warning check leaves it to the technique's planning).
+TEST(CliFiltered, BadMomentSettingsOfAPickedLightNameItsField) {
+  const auto dir = testsupport::temp_dir("cli_filtered_moments_light");
+  std::ofstream(dir / "two.json") << R"({"objects": [{"primitive": {"type": "plane", "size": [8, 8]}},
+      {"primitive": {"type": "box", "size": [1, 1, 1]}, "transform": {"translate": [0, 0.5, 0]}}],
+    "lights": [{"type": "directional", "direction": [-0.4, -1, -0.3]},
+               {"type": "directional", "direction": [0.4, -1, -0.3],
+                "shadow": {"technique": "cascades", "filter": "poisson", "params": {"moments": "vsm"}}}]})";
+  const testsupport::Outcome r = testsupport::shadowlab(dir, "render two.json --light 1 --size 32x18 --out f.png");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err.rfind("shadowlab: error: two.json: lights[1].shadow.filter: poisson is not used with moments = vsm", 0), 0u)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "f.png"));
+}
+
 // The projective scene's terrain only receives: a moment map misses it and its figures' shadows vanish, which
 // the run says once (not once per frame), and still renders; with the classic map it says nothing.
 TEST(CliFiltered, MomentMapsOverReceiversThatCastNothingAreWarnedOnce) {

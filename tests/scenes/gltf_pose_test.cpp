@@ -141,6 +141,24 @@ TEST(GltfPose, SkinErrorsNameTheKey) {
   }
 }
 
+// A mirroring node's skinned mesh is posed in world space under an identity instance: its winding is flipped by
+// the importer (glTF §3.7.4: the node's global transform decides), its positions still the joints'.
+TEST(GltfPose, AMirroredSkinnedNodeFlipsItsWinding) {
+  const auto dir = testsupport::temp_dir("gltf_pose_mirror");
+  SkinFile file;
+  const scenes::Scene plain = scenes::import_gltf(file.f.write_gltf(dir, "plain"));
+  file.f.doc["nodes"][2]["scale"] = {-1, 1, 1};
+  const scenes::Scene mirrored = scenes::import_gltf(file.f.write_gltf(dir, "mirrored"));
+  const scenes::Mesh &a = plain.meshes[plain.instances[0].mesh], &b = mirrored.meshes[mirrored.instances[0].mesh];
+  ASSERT_EQ(a.indices.size(), b.indices.size());
+  for (size_t t = 0; t < a.indices.size(); t += 3) {
+    EXPECT_EQ(b.indices[t], a.indices[t]);
+    EXPECT_EQ(b.indices[t + 1], a.indices[t + 2]);
+    EXPECT_EQ(b.indices[t + 2], a.indices[t + 1]);
+  }
+  for (size_t v = 0; v < a.positions.size(); ++v) expect_near(b.positions[v], a.positions[v], "the joints place it");
+}
+
 // Weights of 0 everywhere leave a vertex where its node puts it, said once.
 TEST(GltfPose, UnweightedVerticesArePlacedByTheNode) {
   const auto dir = testsupport::temp_dir("gltf_pose_unweighted");
@@ -208,6 +226,20 @@ TEST(GltfPose, QuantizedAttributesWithTheExtension) {
   ASSERT_EQ(s.meshes.size(), 1u);
   expect_near(s.meshes[0].positions[1], {1, 0, 0}, "normalized SHORT 32767");
   expect_near(s.meshes[0].positions[2], {0, 1, 0}, "normalized SHORT 32767");
+
+  // Normals: normalized BYTE is read; UNSIGNED_BYTE (which cannot point backwards) is refused by key.
+  const std::vector<int8_t> up = {0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0};
+  const int normals = f.accessor(up.data(), up.size(), 5120, 3, "VEC3");
+  f.doc["accessors"][normals]["normalized"] = true;
+  f.doc["bufferViews"][f.doc["accessors"][normals]["bufferView"].get<int>()]["byteStride"] = 4;
+  f.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = normals;
+  const scenes::Scene n = scenes::import_gltf(f.write_gltf(dir, "normals"));
+  expect_near(n.meshes[0].normals[0], {0, 0, 1}, "normalized BYTE 127");
+  f.doc["accessors"][normals]["componentType"] = 5121;
+  const auto unsigned_normals = f.write_gltf(dir, "unsigned");
+  EXPECT_EQ(error_of(unsigned_normals),
+            unsigned_normals.string() + ": meshes[0].primitives[0].attributes.NORMAL (accessors[1]): expected FLOAT or "
+                                        "normalized BYTE or SHORT components (KHR_mesh_quantization)");
 }
 
 }  // namespace
