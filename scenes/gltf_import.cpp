@@ -260,6 +260,7 @@ class Importer {
     const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
     if (node.skin >= 0 && size_t(node.skin) >= model_.skins.size())
       fail(key + ".skin", "skin " + std::to_string(node.skin) + " does not exist");
+    check_morph_counts(node, key);
     if (node.skin >= 0 || !gltf::morph_weights(node, mesh).empty()) {
       posed_.push_back({index, key, out_.instances.size(), world});
       for (const tinygltf::Primitive& prim : mesh.primitives) {
@@ -310,6 +311,25 @@ class Importer {
     if (mode < 0 || mode > 3) fail(where + ".mode", "unknown primitive mode " + std::to_string(mode));
     const std::string w = file_ + ": " + where + ": mode " + std::to_string(mode) + " (points or lines) skipped";
     if (std::find(out_.warnings.begin(), out_.warnings.end(), w) == out_.warnings.end()) out_.warnings.push_back(w);
+  }
+
+  // glTF 2.0 §3.7.2.2: every primitive of a mesh has as many morph targets, and weights (the node's, the mesh's)
+  // give one per target.
+  void check_morph_counts(const tinygltf::Node& node, const std::string& key) const {
+    const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+    const std::string m = indexed("meshes", size_t(node.mesh));
+    const size_t targets = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
+    for (size_t p = 1; p < mesh.primitives.size(); ++p)
+      if (mesh.primitives[p].targets.size() != targets)
+        fail(m + "." + indexed("primitives", p) + ".targets",
+             std::to_string(mesh.primitives[p].targets.size()) + " morph targets where primitive 0 has " +
+                 std::to_string(targets));
+    const auto count = [&](const std::vector<double>& w, const std::string& where) {
+      if (!w.empty() && w.size() != targets)
+        fail(where, std::to_string(w.size()) + " weights for " + std::to_string(targets) + " morph targets");
+    };
+    count(mesh.weights, m + ".weights");
+    count(node.weights, key + ".weights");
   }
 
   // A node whose meshes are posed after the walk: its index, key, first instance and world transform.

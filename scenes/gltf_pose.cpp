@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <string>
 
@@ -116,6 +117,16 @@ size_t apply_skin(const tinygltf::Primitive& prim, const std::vector<glm::mat4>&
       }
   }
   if (sets == 0) throw SceneError(file, attr + "JOINTS_0", "missing: the node has a skin");
+  // glTF numbers attribute sets from 0 without gaps: a later set after the missing one would be ignored.
+  for (const auto& attribute : prim.attributes)
+    for (const char* prefix : {"JOINTS_", "WEIGHTS_"})
+      if (const std::string& semantic = attribute.first; semantic.rfind(prefix, 0) == 0) {
+        const std::string n = semantic.substr(std::strlen(prefix));
+        if (n.empty() || n.size() > 6 || n.find_first_not_of("0123456789") != std::string::npos || std::stoul(n) >= sets)
+          throw SceneError(file, attr + semantic, std::string("follows a gap: the sets of ") + prefix +
+                                                      "n are numbered from 0 without one (the last read is " +
+                                                      std::to_string(sets - 1) + ")");
+      }
   size_t unweighted = 0;
   for (size_t v = 0; v < n; ++v) {
     glm::mat4 m = unskinned;

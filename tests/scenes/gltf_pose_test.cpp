@@ -133,6 +133,14 @@ TEST(GltfPose, SkinErrorsNameTheKey) {
                                               "finite number");
   }
   {
+    SkinFile file;  // a second set numbered 2: the gap would leave it unread
+    file.f.doc["meshes"][0]["primitives"][0]["attributes"]["JOINTS_2"] = file.joints_accessor;
+    file.f.doc["meshes"][0]["primitives"][0]["attributes"]["WEIGHTS_2"] = file.weights_accessor;
+    const auto path = file.f.write_gltf(dir, "gap");
+    EXPECT_EQ(error_of(path), path.string() + ": meshes[0].primitives[0].attributes.JOINTS_2: follows a gap: the sets "
+                                              "of JOINTS_n are numbered from 0 without one (the last read is 0)");
+  }
+  {
     SkinFile file;
     file.f.doc["nodes"][2]["skin"] = 3;
     const auto path = file.f.write_gltf(dir, "skin");
@@ -197,6 +205,11 @@ TEST(GltfPose, MorphTargetsAtTheirDefaultWeights) {
   ASSERT_EQ(plain.instances.size(), 2u);
   EXPECT_EQ(plain.instances[0].mesh, plain.instances[1].mesh);  // shared, as any unposed mesh
   expect_near(world_positions(plain, 0)[3], {1, 1, 0}, "weights 0");
+
+  f.doc["nodes"][0]["weights"] = {1.0, 0.5};  // two weights for one target
+  const auto counted = f.write_gltf(dir, "counted");
+  EXPECT_EQ(error_of(counted), counted.string() + ": nodes[0].weights: 2 weights for 1 morph targets");
+  f.doc["nodes"][0].erase("weights");
 
   f.doc["meshes"][mesh]["weights"] = {0.5};
   const std::vector<glm::vec3> few(3, glm::vec3(0, 0, 2));
