@@ -347,6 +347,7 @@ class Importer {
     for (size_t steps = 0; index >= 0; ++steps) {
       if (steps > model_.nodes.size()) fail(key, "the joint's parents form a cycle");
       if (world_[size_t(index)]) return *world_[size_t(index)] * m;
+      check_transform_fields(model_.nodes[size_t(index)], indexed("nodes", size_t(index)));  // not walked
       m = node_matrix(model_.nodes[size_t(index)]) * m;
       index = parent_[size_t(index)];
     }
@@ -364,7 +365,6 @@ class Importer {
       std::vector<glm::dmat4> globals;
       for (int j : skin.joints) {
         if (j < 0 || size_t(j) >= model_.nodes.size()) fail(key, "node " + std::to_string(j) + " does not exist");
-        check_transform_fields(model_.nodes[size_t(j)], indexed("nodes", size_t(j)));
         globals.push_back(global(j, key));
       }
       joints = gltf::joint_matrices(model_, size_t(node.skin), read_, file_, globals);

@@ -141,6 +141,14 @@ TEST(GltfPose, SkinErrorsNameTheKey) {
                                               "of JOINTS_n are numbered from 0 without one (the last read is 0)");
   }
   {
+    SkinFile file;  // a joint outside the scene's hierarchy is checked as a walked node is
+    const int outside = file.f.node({{"rotation", {0, 0, 0, 0}}}, false);
+    file.f.doc["skins"][0]["joints"] = {outside, 0};
+    const auto path = file.f.write_gltf(dir, "outside");
+    EXPECT_EQ(error_of(path), path.string() + ": nodes[" + std::to_string(outside) +
+                                  "].rotation: is not a unit quaternion (its length is 0.000000)");
+  }
+  {
     SkinFile file;
     file.f.doc["nodes"][2]["skin"] = 3;
     const auto path = file.f.write_gltf(dir, "skin");
