@@ -1,5 +1,6 @@
 // Option parsing, scene lookup and terminal progress shared by the commands (see cli_common.h).
 #include "cli/cli_common.h"
+#include "cli/light_choice.h"
 
 #include "scenes/io/io_error.h"
 
@@ -141,9 +142,9 @@ void print_notes(const std::vector<std::string>& notes) {
 }
 
 void print_frame_warnings(const std::string& scene, const std::vector<std::string>& warnings,
-                          std::set<std::string>& said) {
+                          std::optional<size_t> chosen, std::set<std::string>& said) {
   for (const std::string& w : warnings) {
-    const std::string line = scene + ": " + w;
+    const std::string line = scene + ": " + light_field(w, chosen);
     if (said.insert(line).second) std::fprintf(stderr, "shadowlab: warning: %s\n", line.c_str());
   }
 }

@@ -69,9 +69,10 @@ scenes::Scene load_scene_or_builtin(const std::string& name, const scenes::Stage
 // Each note on stderr as `shadowlab: note: ...`.
 void print_notes(const std::vector<std::string>& notes);
 // A frame's warnings (frame::Frame::warnings) on stderr as `shadowlab: warning: SCENE: ...`, those not in `said`
-// yet (which they join), so that a sequence or a sweep says each once.
+// yet (which they join), so that a sequence or a sweep says each once. With --light (`chosen`: the light's place
+// in the file, light_choice.h) they name the light there, as errors do.
 void print_frame_warnings(const std::string& scene, const std::vector<std::string>& warnings,
-                          std::set<std::string>& said);
+                          std::optional<size_t> chosen, std::set<std::string>& said);
 
 // A progress line on stderr for work that runs over a second, only when stderr is a terminal (silent in scripts
 // and CI): update() sets what the work is doing; a small thread redraws it with the elapsed time four times a

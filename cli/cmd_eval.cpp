@@ -140,13 +140,13 @@ frame::FrameConfig combo_config(const frame::FrameConfig& base, const Combinatio
 nlohmann::json used_json(const frame::ResolvedLight& used) {
   const tech::ShadowConfig& c = used.config;
   const tech::TechniqueInfo& info = tech::info(c.technique);
-  const bool biased = c.technique != tech::Technique::none && c.technique != tech::Technique::projective &&
-                      c.technique != tech::Technique::irregular;
+  const bool depth_map = c.technique != tech::Technique::none && c.technique != tech::Technique::projective &&
+                         c.technique != tech::Technique::irregular;  // a map of depths, compared with a bias
   return {{"used_technique", std::string(info.name)},
           {"used_filter", info.reads_filter ? nlohmann::json(std::string(tech::to_string(c.filter))) : nlohmann::json()},
-          {"used_bias", biased ? nlohmann::json(std::string(tech::to_string(c.bias.mode))) : nlohmann::json()},
+          {"used_bias", depth_map ? nlohmann::json(std::string(tech::to_string(c.bias.mode))) : nlohmann::json()},
           {"used_map_size", c.technique == tech::Technique::none ? 0 : c.map_size},
-          {"used_depth_format", biased ? nlohmann::json(std::string(tech::to_string(c.depth_format))) : nlohmann::json()}};
+          {"used_depth_format", depth_map ? nlohmann::json(std::string(tech::to_string(c.depth_format))) : nlohmann::json()}};
 }
 
 // One row: a combination's score for one light.
@@ -223,11 +223,7 @@ int run_eval(const EvalArgs& a) {
   std::optional<scenes::Scene> receivers_scene;
   bool projective = false;
   for (const auto& t : techniques) projective |= t == tech::Technique::projective;
-  if (projective && scene.staged_ground) {
-    receivers_scene.emplace(scene);
-    for (scenes::Instance& inst : receivers_scene->instances)
-      if (inst.object == *scene.staged_ground) inst.casts_shadows = false;
-  }
+  if (projective && scene.staged_ground) scenes::ground_receives_only(receivers_scene.emplace(scene));
   const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);  // once for the sweep
   print_notes(notes);
   raster::Renderer renderer(check_threads(a.threads));
@@ -309,9 +305,7 @@ int run_eval(const EvalArgs& a) {
       config.aliasing = true;  // measured where the technique has a measure (frame/aliasing.h)
       const Variant& v = receivers && c.technique == tech::Technique::projective ? *receivers : main;
       const reference::ScoredFrame sf = reference::score_config(*v.scene, config, renderer, v.ref, options, &textures);
-      std::vector<std::string> warnings;  // named by the light's place in the file, as errors are
-      for (const std::string& w : sf.frame.warnings) warnings.push_back(light_field(w, chosen_light));
-      print_frame_warnings(a.scene, warnings, warned);
+      print_frame_warnings(a.scene, sf.frame.warnings, chosen_light, warned);
       std::vector<std::vector<reference::LightShimmer>> shimmers;
       for (const Moved& m : v.motions) {
         const reference::ScoredFrame moved = reference::score_config(m.scene, config, renderer, *m.ref, options, &textures);

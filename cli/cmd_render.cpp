@@ -103,10 +103,10 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
     stage.sun = glm::vec2(az, el);
   }
   stage.up = up_axis(a.up);
-  stage.ground_casts = a.technique != "projective";
   stage.camera_chosen = a.camera.rfind("orbit:", 0) == 0;
   std::vector<std::string> notes;
   scenes::Scene scene = load_scene_or_builtin(a.scene, &stage, &notes);
+  if (a.technique == "projective") scenes::ground_receives_only(scene);
   // Loaded once for every frame; a missing texture fails here, before anything is rendered or written.
   const scenes::io::SceneTextures textures = scenes::io::load_scene_textures(scene);
   frame::FrameConfig config;
@@ -160,9 +160,7 @@ nlohmann::json render_job(const RenderArgs& a, bool text, Progress& progress, co
       if (where.rfind("--", 0) != 0 && std::filesystem::is_regular_file(a.scene, ec)) where = a.scene + ": " + where;
       throw CliError(where, what.substr(colon + 2));
     }
-    std::vector<std::string> warnings;  // named by the light's place in the file, as errors are
-    for (const std::string& w : result->warnings) warnings.push_back(light_field(w, chosen_light));
-    print_frame_warnings(a.scene, warnings, warned);
+    print_frame_warnings(a.scene, result->warnings, chosen_light, warned);
     const double total = watch.ms();
     if (text && a.stats) {
       const frame::FrameStats& s = result->stats;

@@ -64,7 +64,6 @@ std::vector<frame::AovChannel> parse_aov_list(const std::string& list, const std
   return channels;
 }
 
-// Every check of a job's arguments that needs no rendering, so a bad job (or batch line) fails before any work.
 scenes::StageOptions::Up up_axis(const std::string& up) {
   using Up = scenes::StageOptions::Up;
   if (up == "y") return Up::y;
@@ -74,6 +73,7 @@ scenes::StageOptions::Up up_axis(const std::string& up) {
   throw CliError("--up", "expected y, z, -y or -z, got '" + up + "'");
 }
 
+// Every check of a job's arguments that needs no rendering, so a bad job (or batch line) fails before any work.
 void check_job(const RenderArgs& a) {
   parse_size(a.size, "--size");
   check_name(a.technique, "--technique", "technique", scenes::parse_technique(a.technique).has_value(),

@@ -264,7 +264,7 @@ class Importer {
     if (node.skin >= 0 || !gltf::morph_weights(node, mesh).empty()) {
       posed_.push_back({index, key, out_.instances.size(), world});
       for (const tinygltf::Primitive& prim : mesh.primitives) {
-        const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+        const int mode = mode_of(prim);
         if (!triangles(mode)) continue;  // pose() says why, as primitive() does
         Instance inst;
         inst.name = !node.name.empty() ? node.name : mesh.name;
@@ -291,7 +291,7 @@ class Importer {
     if (auto it = primitives_.find(key); it != primitives_.end()) return it->second;
     const tinygltf::Primitive& prim = model_.meshes[m].primitives[p];
     const std::string where = indexed("meshes", m) + "." + indexed("primitives", p);
-    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    const int mode = mode_of(prim);
     std::optional<std::pair<uint32_t, uint32_t>> result;
     if (triangles(mode)) {
       out_.meshes.push_back(convert(prim, mode, where, model_.meshes[m].name));
@@ -303,6 +303,8 @@ class Importer {
     return result;
   }
 
+  // A primitive's mode, TRIANGLES where it gives none.
+  static int mode_of(const tinygltf::Primitive& prim) { return prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode; }
   static bool triangles(int mode) {
     return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
   }
@@ -373,7 +375,7 @@ class Importer {
     for (size_t k = 0; k < mesh.primitives.size(); ++k) {
       const tinygltf::Primitive& prim = mesh.primitives[k];
       const std::string where = indexed("meshes", size_t(node.mesh)) + "." + indexed("primitives", k);
-      const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+      const int mode = mode_of(prim);
       if (!triangles(mode)) {
         skip(mode, where);
         continue;

@@ -83,7 +83,6 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
       ground.name = "ground";
       ground.source = Shape{PlaneShape{glm::vec2(side), 1}};
       ground.transform.translate = glm::vec3(centre.x, bounds.min.y, centre.z);  // the model stands on it
-      ground.casts_shadows = options.ground_casts;
       // A mid-grey matte ground (albedo 0.5, as concrete): white would outshine the model under the sun.
       Material matte;
       matte.name = "stage ground";
@@ -112,6 +111,12 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
   out.scene = build_scene(desc, context);
   if (desc.objects.size() == 2 && out.scene.objects.size() == 2) out.scene.staged_ground = 1;  // model, ground
   return out;
+}
+
+void ground_receives_only(Scene& scene) {
+  if (!scene.staged_ground) return;
+  for (Instance& inst : scene.instances)
+    if (inst.object == *scene.staged_ground) inst.casts_shadows = false;
 }
 
 }  // namespace scenes

@@ -15,11 +15,10 @@
 namespace scenes {
 
 struct StageOptions {
-  bool ground = true;                // a ground plane under a model that has no lights
-  // The ground is drawn into the shadow maps, as a floor is: filtered maps (esm, vsm, evsm) need their
-  // receivers in the map, or every shadow erodes by the blur where the map holds only the far plane. Projective
-  // shadows want it false: their casters darken everything beyond them, and the article's ground casts nothing.
-  bool ground_casts = true;
+  // A ground plane under a model that has no lights. It casts, as a floor is drawn into the maps: filtered maps
+  // (esm, vsm, evsm) need their receivers in the map, or every shadow erodes by the blur where the map holds
+  // only the far plane (projective shadows want it otherwise: ground_receives_only).
+  bool ground = true;
   // Azimuth (from +Z towards +X) and elevation, degrees; default: kStageSunAzimuth degrees round from the
   // camera's azimuth, kStageSunElevation up.
   std::optional<glm::vec2> sun;
@@ -41,6 +40,10 @@ inline constexpr float kStageSunAzimuth = 105.0f, kStageSunElevation = 50.0f;
 // Loads `path` (.gltf or .glb) as load_scene() does, then stages it as described above. Throws SceneError
 // (and for a sun below the horizon or at the zenith's exact opposite, SceneError on "sun").
 StagedScene load_model_staged(const std::filesystem::path& path, const StageOptions& options);
+
+// The staged ground of `scene` (Scene::staged_ground), if it has one, made to receive only: projective shadows
+// want that, since their casters darken everything beyond them and the article's ground casts nothing.
+void ground_receives_only(Scene& scene);
 
 // The direction a sun at azimuth `az` and elevation `el` (degrees) shines along (unit, pointing down for el > 0).
 glm::vec3 sun_direction(float az_deg, float el_deg);

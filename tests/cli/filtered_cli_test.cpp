@@ -58,6 +58,19 @@ TEST(CliFiltered, MomentMapsOverReceiversThatCastNothingAreWarnedOnce) {
   EXPECT_EQ(classic.err, "");
 }
 
+// Under --light the warning names the light by its place in the file, as an error would.
+TEST(CliFiltered, MomentWarningOfAPickedLightNamesItsPlaceInTheFile) {
+  const auto dir = testsupport::temp_dir("cli_filtered_warn_light");
+  std::ofstream(dir / "two.json") << R"({"objects": [{"name": "floor", "primitive": {"type": "plane", "size": [8, 8]},
+        "casts_shadows": false},
+      {"primitive": {"type": "box", "size": [1, 1, 1]}, "transform": {"translate": [0, 0.5, 0]}}],
+    "lights": [{"type": "directional", "direction": [-0.4, -1, -0.3]},
+               {"name": "key", "type": "directional", "direction": [0.4, -1, -0.3], "shadow": {"technique": "vsm"}}]})";
+  const testsupport::Outcome r = testsupport::shadowlab(dir, "render two.json --light 1 --size 32x18 --out f.png");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.rfind("shadowlab: warning: two.json: lights[1] (key): vsm reads its map's moments", 0), 0u) << r.err;
+}
+
 TEST(CliFiltered, PcssOnAPointLightsCubeMap) {
   const auto dir = testsupport::temp_dir("cli_filtered_cube_pcss");
   const testsupport::Outcome r = testsupport::shadowlab(

@@ -67,10 +67,9 @@ TEST(Stage, BareModelGetsASunAGroundAndACamera) {
   EXPECT_NEAR(casters.max.z - casters.min.z, 12.0f, 1e-4f);
   ASSERT_EQ(s.scene.cameras.size(), 1u);
   EXPECT_GE(s.notes.size(), 3u);  // sun, ground, camera
-  scenes::StageOptions receivers = o;
-  receivers.ground_casts = false;
-  const scenes::Aabb model = scenes::scene_bounds(scenes::load_model_staged(write_box(dir, "box3", false), receivers).scene,
-                                                  scenes::InstanceFilter::casters);
+  scenes::Scene receivers = scenes::load_model_staged(write_box(dir, "box3", false), o).scene;
+  scenes::ground_receives_only(receivers);
+  const scenes::Aabb model = scenes::scene_bounds(receivers, scenes::InstanceFilter::casters);
   EXPECT_NEAR(model.max.z - model.min.z, 4.0f, 1e-5f);  // the model alone
 
   o.ground = false;
