@@ -28,8 +28,12 @@ if [ ! -f "$build/build.ninja" ]; then
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
     -DSHADOWLAB_FUZZ=ON -DSHADOWLAB_TESTS=OFF -DSHADOWLAB_BENCH=OFF -DSHADOWLAB_GL_REFERENCE=OFF >/dev/null || exit 2
 fi
-cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}" >/dev/null || {
-  echo "shadowlab fuzz: building the targets failed (run: cmake --build $build --target ${targets[*]})" >&2
+# The build's output goes to a log; on failure its errors are printed, so that a CI log shows why.
+mkdir -p "$build/fuzz-logs"
+cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}" >"$build/fuzz-logs/build.log" 2>&1 || {
+  grep -a -E 'error|FAILED|undefined reference' "$build/fuzz-logs/build.log" | head -20 | sed 's/^/  /' >&2
+  echo "shadowlab fuzz: building the targets failed (log: $build/fuzz-logs/build.log;" \
+    "run: cmake --build $build --target ${targets[*]})" >&2
   exit 2
 }
 

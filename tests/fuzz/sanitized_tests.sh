@@ -16,8 +16,11 @@ filter=${1:-*}
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DSHADOWLAB_FUZZ=ON -DSHADOWLAB_TESTS=ON -DSHADOWLAB_TEST_MODULES="scenes;cli" -DSHADOWLAB_BENCH=OFF \
   -DSHADOWLAB_GL_REFERENCE=OFF >/dev/null || exit 2
-cmake --build "$build" --parallel "$(nproc)" --target shadowlab shadowlab_tests >/dev/null || {
-  echo "shadowlab sanitized tests: building failed (run: cmake --build $build --target shadowlab_tests)" >&2
+mkdir -p "$build/fuzz-logs"
+cmake --build "$build" --parallel "$(nproc)" --target shadowlab shadowlab_tests >"$build/fuzz-logs/tests-build.log" 2>&1 || {
+  grep -a -E 'error|FAILED|undefined reference' "$build/fuzz-logs/tests-build.log" | head -20 | sed 's/^/  /' >&2
+  echo "shadowlab sanitized tests: building failed (log: $build/fuzz-logs/tests-build.log;" \
+    "run: cmake --build $build --target shadowlab_tests)" >&2
   exit 2
 }
 # The same leak suppressions as the fuzzers (third-party leaks our code cannot free, each explained there); a
