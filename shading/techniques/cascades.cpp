@@ -165,9 +165,9 @@ class CascadeShadow final : public LightShadow {
     dispatch_filter(l.filter_kind, l.filter.pcf_taps, [&]<class F, bool kPcf>() {
       for (size_t i = 0; i < q.size(); ++i) {
         const SliceChoice c = choose_slice(splits_, blend_, view_distance(camera_, q[i].p));
-        float v = slice_visibility<F, kPcf>(set_.map(c.slice), l, q[i].p, q[i].n, q[i].frag);
+        float v = slice_visibility<F, kPcf>(set_.map(c.slice), l, q[i]);
         if (c.next_weight > 0.0f)
-          v += c.next_weight * (slice_visibility<F, kPcf>(set_.map(c.slice + 1), l, q[i].p, q[i].n, q[i].frag) - v);
+          v += c.next_weight * (slice_visibility<F, kPcf>(set_.map(c.slice + 1), l, q[i]) - v);
         vis[i] = v;
       }
     });
@@ -222,7 +222,7 @@ class CascadeShadow final : public LightShadow {
   float moment_slice_visibility(size_t k, const ShadowQuery& q) const {
     const SliceMap& s = set_.map(k);
     SampleContext ctx;
-    if (!slice_context(s, set_.light(), q.p, q.n, q.frag, ctx)) return 1.0f;
+    if (!slice_context(s, set_.light(), q, ctx)) return 1.0f;
     if (!(ctx.st.x >= 0.0f && ctx.st.x <= 1.0f && ctx.st.y >= 0.0f && ctx.st.y <= 1.0f)) return 1.0f;
     const glm::vec4 m = read_moments(moments_->maps[k].view, moments_->sampler, ctx.st, q.p, q, [&](glm::vec3 x) {
       const glm::vec4 c = s.shadow * glm::vec4(x, 1.0f);  // orthographic: moments refuse LiSPSM slices

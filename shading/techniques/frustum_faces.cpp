@@ -193,7 +193,7 @@ class FaceShadow final : public LightShadow {
     const SliceLight& l = set_.light();
     dispatch_filter(l.filter_kind, l.filter.pcf_taps, [&]<class F, bool kPcf>() {
       for (size_t i = 0; i < q.size(); ++i)
-        vis[i] = slice_visibility<F, kPcf>(set_.map(face_owner(plan_, q[i].p)), l, q[i].p, q[i].n, q[i].frag);
+        vis[i] = slice_visibility<F, kPcf>(set_.map(face_owner(plan_, q[i].p)), l, q[i]);
     });
   }
 

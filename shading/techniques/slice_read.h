@@ -52,12 +52,23 @@ inline SliceMap make_slice_map(const ShadowMapSet& set, size_t pass, float depth
   return m;
 }
 
+// The plane a receiver's depth in the map follows: its triangle's, spanned by the screen derivatives of the
+// position (what the map holds is the rasterized facet, not the smooth shading normal's tangent plane: on a
+// tessellated sphere the two differ by a few degrees, which is the whole gradient where the facet nearly faces
+// the map's depth axis), or the shading normal's where the derivatives are degenerate (a query built without
+// them). Unit length.
+inline glm::vec3 receiver_plane_normal(const ShadowQuery& q) {
+  const glm::vec3 c = glm::cross(q.dpdx, q.dpdy);
+  const float len = glm::length(c);
+  return len > 1e-6f * glm::length(q.dpdx) * glm::length(q.dpdy) && std::isfinite(len) && len > 0.0f ? c / len : q.n;
+}
+
 // The slope bias on a perspective map, in its window depth: the receiver's own depth gradient in the map (the
-// plane through p with normal n, taken through the map's projection at two points one hundredth of the map's
-// depth extent away along the plane), over slope / 0.005 texels along each axis, clamped to slope_max, and at
-// least two steps of the map's depth format (where texels are tiny, quantisation is all that is left). A warp
-// tilts in the map a surface that faces the light in the world, so the classic tan(acos(N·L)) term, zero
-// there, would leave it to acne (the receiver-plane depth bias of Isidoro, 2006).
+// plane through p with normal n, receiver_plane_normal, taken through the map's projection at two points one
+// hundredth of the map's depth extent away along the plane), over slope / 0.005 texels along each axis, clamped
+// to slope_max, and at least two steps of the map's depth format (where texels are tiny, quantisation is all
+// that is left). A warp tilts in the map a surface that faces the light in the world, so the classic
+// tan(acos(N·L)) term, zero there, would leave it to acne (the receiver-plane depth bias of Isidoro, 2006).
 inline float receiver_plane_bias(const SliceMap& s, const BiasParams& b, glm::vec3 p, glm::vec3 n,
                                  glm::vec3 mapped) {
   const glm::vec3 t1 = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
@@ -80,8 +91,9 @@ inline float receiver_plane_bias(const SliceMap& s, const BiasParams& b, glm::ve
 // Where point p with unit normal n reads map s: false (lit, no lookup) when p lies behind a perspective map's
 // projection centre. Constant (and, on orthographic maps, slope) bias moves p towards the light by the bias
 // times the map's depth extent; slope on a perspective map is receiver_plane_bias.
-inline bool slice_context(const SliceMap& s, const SliceLight& l, glm::vec3 p, glm::vec3 n, glm::vec2 frag,
-                          SampleContext& ctx) {
+inline bool slice_context(const SliceMap& s, const SliceLight& l, const ShadowQuery& query, SampleContext& ctx) {
+  const glm::vec3 p = query.p, n = query.n;
+  const glm::vec2 frag = query.frag;
   glm::vec3 q = p;
   if (l.bias.mode == BiasMode::normal) q += n * l.bias.normal_offset;
   const bool plane_bias = s.perspective && l.bias.mode == BiasMode::slope;
@@ -94,7 +106,8 @@ inline bool slice_context(const SliceMap& s, const SliceLight& l, glm::vec3 p, g
   if (!(c.w > 0.0f)) return false;
   const float w = 1.0f / c.w;
   ctx = SampleContext{glm::vec2(c.x * w, c.y * w), c.z * w, frag, p};
-  if (plane_bias) ctx.ref -= receiver_plane_bias(s, l.bias, p, n, glm::vec3(ctx.st * s.size, ctx.ref));
+  if (plane_bias)
+    ctx.ref -= receiver_plane_bias(s, l.bias, p, receiver_plane_normal(query), glm::vec3(ctx.st * s.size, ctx.ref));
   return true;
 }
 
@@ -113,9 +126,9 @@ inline bool slice_texels(const SliceMap& s, glm::vec3 p, std::span<const glm::ve
 
 // Visibility of p in map s with the light's filter F (dispatch_filter picks F once per batch).
 template <class Filter, bool kPcfTaps>
-float slice_visibility(const SliceMap& s, const SliceLight& l, glm::vec3 p, glm::vec3 n, glm::vec2 frag) {
+float slice_visibility(const SliceMap& s, const SliceLight& l, const ShadowQuery& q) {
   SampleContext ctx;
-  if (!slice_context(s, l, p, n, frag, ctx)) return 1.0f;
+  if (!slice_context(s, l, q, ctx)) return 1.0f;
   return Filter{}(Taps<kPcfTaps>{&s.maps}, ctx, l.filter);
 }
 
@@ -128,7 +141,7 @@ void slice_visibility_x8(const SliceMap& s, const SliceLight& l, std::span<const
   SampleLanes b;
   std::array<size_t, 8> point_of;
   for (const size_t i : which) {
-    if (!slice_context(s, l, q[i].p, q[i].n, q[i].frag, b.ctx[size_t(b.count)])) {
+    if (!slice_context(s, l, q[i], b.ctx[size_t(b.count)])) {
       vis[i] = 1.0f;
       continue;
     }

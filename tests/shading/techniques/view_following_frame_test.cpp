@@ -4,8 +4,11 @@
 // refusals a user meets.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
+
+#include <glm/geometric.hpp>
 
 #include "scenes/builtin_scenes.h"
 #include "scenes/frame/frame.h"
@@ -47,10 +50,10 @@ const Case kCases[] = {
     {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0xd415116e4e7e48a7ull},
     {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0x987ca86d73a61dbbull},
     {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0x9b500cc842e9a882ull},
-    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x44cec22f04e2aaadull},
-    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0xf76278c5e56f3d57ull},
-    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x9fa116fcdecb8d28ull},
-    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0x381545bc1c1c9f89ull},
+    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x609288ef64042f87ull},
+    {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0xffb32891ca7bded6ull},
+    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x3a7d988d011982a7ull},
+    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0x065d49333b8f2fa2ull},
 };
 
 class ViewFollowingGolden : public testing::TestWithParam<Case> {};
@@ -228,6 +231,50 @@ TEST(ViewFollowing, ALonePlaneHasNoAcneOnWarpedMaps) {
     EXPECT_EQ(differing(frame::render_frame(s, o, r)), 0u) << tech::to_string(technique) << " " << warp;
     o.bias = tech::BiasMode::none;
     EXPECT_GT(differing(frame::render_frame(s, o, r)), 0u) << tech::to_string(technique) << " " << warp << ", no bias";
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// The tutorial's sphere (48 × 24 facets) cannot shadow its own lit side: where its facet faces the light, every
+// pixel on it reads lit on the warped maps (a factor of at least 0.99: a texel at the far corner of a bilinear
+// footprint, weighted under 0.01, may still compare at the bias's edge), with the default PCF filter and
+// (receiver-plane) slope bias.
+// The bias follows the facet's plane, which the map holds, not the smooth shading normal's: with the shading
+// normal's plane, the gradient vanished where the normal faces the map's depth axis while the facet's did not,
+// and specks of acne showed near the highlight (37 to 46 pixels under 0.99 in these four, factors down to 0.51).
+TEST(ViewFollowing, ASphereFacingTheLightHasNoAcneOnWarpedMaps) {
+  const scenes::Scene s = scenes::builtin_scene("tutorial");
+  const glm::vec3 centre(2.2f, 1.2f, 0.8f), to_light = glm::normalize(glm::vec3(0.5f, 2.0f, 2.0f));
+  raster::Renderer r(2);
+  frame::FrameConfig o;
+  o.width = 1280;
+  o.height = 720;
+  o.surface_record = true;
+  const std::pair<tech::Technique, const char*> cases[] = {{tech::Technique::lispsm, ""},
+                                                           {tech::Technique::cascades, "lispsm"},
+                                                           {tech::Technique::frustum_faces, "exact"},
+                                                           {tech::Technique::frustum_faces, "lispsm"}};
+  for (const auto& [technique, warp] : cases) {
+    o.technique = technique;
+    o.params.clear();
+    if (technique == tech::Technique::cascades) o.params["cascade_warp"] = std::string(warp);
+    if (technique == tech::Technique::frustum_faces) o.params["face_warp"] = std::string(warp);
+    const frame::Frame f = frame::render_frame(s, o, r);
+    ASSERT_TRUE(f.surface.has_value());
+    const frame::SurfaceRecord& rec = *f.surface;
+    size_t facing = 0, dark = 0;
+    for (size_t p = 0; p < rec.pixels(); ++p) {
+      // On the sphere, its facet turned towards the light by more than ~12° from grazing.
+      if (!rec.covered[p] || std::abs(glm::length(rec.position[p] - centre) - 1.2f) > 0.02f) continue;
+      if (glm::dot(rec.normal[p], to_light) < 0.2f || !rec.lit_facing[p * rec.lights]) continue;
+      ++facing;
+      dark += rec.visibility[p * rec.lights] < 0.99f;
+    }
+    EXPECT_GT(facing, 8000u) << tech::to_string(technique) << " " << warp;  // the sphere is in view
+    EXPECT_EQ(dark, 0u) << tech::to_string(technique) << " " << warp;
   }
 }
 
