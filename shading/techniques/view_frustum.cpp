@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -17,16 +19,23 @@ float view_distance(const CameraView& c, glm::vec3 p) { return glm::dot(p - c.ey
 ViewRange receiver_view_range(const CameraView& c, const Box& receivers) {
   ViewRange r{c.near, c.far};
   if (receivers.empty()) return r;
+  // The view distances of the part of the frustum inside the box; the box's own corners where the two do not
+  // meet (nothing the camera sees receives, and the range only has to be valid).
+  std::vector<glm::vec3> points = clip_slice_to_box(slice_corners(c, c.near, c.far), receivers);
+  if (points.empty())
+    for (int i = 0; i < 8; ++i)
+      points.emplace_back((i & 1) ? receivers.max.x : receivers.min.x, (i & 2) ? receivers.max.y : receivers.min.y,
+                          (i & 4) ? receivers.max.z : receivers.min.z);
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec3 p((i & 1) ? receivers.max.x : receivers.min.x, (i & 2) ? receivers.max.y : receivers.min.y,
-                      (i & 4) ? receivers.max.z : receivers.min.z);
+  for (const glm::vec3& p : points) {
     const float d = view_distance(c, p);
     lo = std::min(lo, d);
     hi = std::max(hi, d);
   }
-  r.near = std::clamp(lo, c.near, c.far);
-  r.far = std::clamp(hi, c.near, c.far);
+  // Widened by a thousandth of its length each way: the clipped vertices carry the rounding of the planes.
+  const float pad = 0.001f * (hi - lo);
+  r.near = std::clamp(lo - pad, c.near, c.far);
+  r.far = std::clamp(hi + pad, c.near, c.far);
   if (!(r.far > r.near * 1.0001f)) r.far = std::min(c.far, r.near * 1.0001f + 1e-4f);
   return r;
 }

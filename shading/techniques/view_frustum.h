@@ -22,8 +22,12 @@ struct ViewRange {
 // The view distance of world point p: dot(p − eye, forward).
 float view_distance(const CameraView& c, glm::vec3 p);
 
-// The camera's [near, far] clipped to the view distances of the receivers' box corners: no slice covers space
-// beyond the last receiver or before the first. Falls back to the camera's range when the box is empty.
+// The camera's [near, far] clipped to the view distances of the frustum's part inside the receivers' box (the
+// body of LiSPSM and of the 2003 face maps: frustum ∩ scene box), widened by a thousandth of its length: no
+// slice covers space beyond the last receiver the camera can see or before the first. A box corner outside the
+// frustum, behind or beside the camera, does not pull the near distance in (with a perspective warp, a near
+// distance too small spends most of the map in front of every receiver). The box's corners where it does not
+// meet the frustum; the camera's range when the box is empty.
 ViewRange receiver_view_range(const CameraView& c, const Box& receivers);
 
 // The visible samples' range, widened by a hundredth of its length each way and kept inside [near, far].

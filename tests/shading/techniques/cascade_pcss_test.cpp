@@ -32,18 +32,19 @@ constexpr int kMap = 1024;
 
 const LightDesc kSun{LightType::directional, {}, {0.0f, -1.0f, 0.0f}};
 
-// The floor, and an occluder over x < 0 at height h along the whole view.
+// The floor, and an occluder over x < 0 at height h along the whole view; 120 m wide, so that the far slices'
+// crops, as wide as the frustum there, are not cut to the floor's width.
 techtest::Soup edge_scene(float h) {
   techtest::Soup s;
-  s.horizontal(-20, 0, -50, 12, h);
-  s.horizontal(-20, 20, -50, 12, 0.0f);
+  s.horizontal(-60, 0, -50, 12, h);
+  s.horizontal(-60, 60, -50, 12, 0.0f);
   return s;
 }
 
 PlanInputs inputs(float h) {
   PlanInputs in;
-  in.casters = Box{{-20.0f, 0.0f, -50.0f}, {20.0f, h, 12.0f}};
-  in.scene_receivers = Box{{-20.0f, 0.0f, -50.0f}, {20.0f, 0.0f, 12.0f}};
+  in.casters = Box{{-60.0f, 0.0f, -50.0f}, {60.0f, h, 12.0f}};
+  in.scene_receivers = Box{{-60.0f, 0.0f, -50.0f}, {60.0f, 0.0f, 12.0f}};
   in.receivers = in.scene_receivers;
   in.camera = camera();
   in.eye = in.camera.eye;

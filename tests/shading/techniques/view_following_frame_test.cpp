@@ -42,18 +42,18 @@ void apply_params(frame::FrameConfig& o, const std::string& text) {
 
 // Expected hashes at 320 × 180 with each technique's default map size and format.
 const Case kCases[] = {
-    {"duel_cascades", "duel", tech::Technique::cascades, "", 0xe35f2e3e046dfd95ull},
-    {"duel_cascades2_separate", "duel", tech::Technique::cascades, "cascades=2;map_layout=separate", 0x866e20285fbc9e36ull},
+    {"duel_cascades", "duel", tech::Technique::cascades, "", 0x6568bf28bbf7019eull},
+    {"duel_cascades2_separate", "duel", tech::Technique::cascades, "cascades=2;map_layout=separate", 0x1f585a443e74629dull},
     {"duel_cascades_stable_blend", "duel", tech::Technique::cascades, "stabilize=true;cascade_blend=0.2", 0x278c3a4129be6edaull},
     {"duel_cascades_visible", "duel", tech::Technique::cascades, "view_range=visible", 0x3b06233669c1ed40ull},
-    {"duel_cascades_lispsm", "duel", tech::Technique::cascades, "cascade_warp=lispsm", 0x0cd381b9fa160c71ull},
-    {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0xd415116e4e7e48a7ull},
-    {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0x987ca86d73a61dbbull},
-    {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0x9b500cc842e9a882ull},
-    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x609288ef64042f87ull},
+    {"duel_cascades_lispsm", "duel", tech::Technique::cascades, "cascade_warp=lispsm", 0x4e9999ca1e4fd146ull},
+    {"duel_lispsm", "duel", tech::Technique::lispsm, "", 0xf3fd96f4c68b804full},
+    {"duel_faces", "duel", tech::Technique::frustum_faces, "", 0xcbf3c16e1c0725eaull},
+    {"tutorial_cascades", "tutorial", tech::Technique::cascades, "", 0xfa680df155240a5aull},
+    {"tutorial_lispsm", "tutorial", tech::Technique::lispsm, "", 0x6f5b51570aaac9b2ull},
     {"tutorial_lispsm_visible", "tutorial", tech::Technique::lispsm, "view_range=visible", 0xffb32891ca7bded6ull},
-    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x3a7d988d011982a7ull},
-    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0x065d49333b8f2fa2ull},
+    {"tutorial_faces", "tutorial", tech::Technique::frustum_faces, "", 0x11448459e8b77820ull},
+    {"tutorial_faces_lispsm", "tutorial", tech::Technique::frustum_faces, "face_warp=lispsm;map_layout=separate", 0xa556d351c5bef05dull},
 };
 
 class ViewFollowingGolden : public testing::TestWithParam<Case> {};
@@ -239,12 +239,12 @@ TEST(ViewFollowing, ALonePlaneHasNoAcneOnWarpedMaps) {
 namespace {
 
 // The tutorial's sphere (48 × 24 facets) cannot shadow its own lit side: where its facet faces the light, every
-// pixel on it reads lit on the warped maps (a factor of at least 0.99: a texel at the far corner of a bilinear
-// footprint, weighted under 0.01, may still compare at the bias's edge), with the default PCF filter and
-// (receiver-plane) slope bias.
+// pixel on it reads lit on the warped maps (a factor of at least 0.98: a texel at the far corner of a bilinear
+// footprint, weighted a few hundredths, may still compare at the bias's edge, which near the sphere's top is
+// the floor of two steps of the cascades' d16), with the default PCF filter and (receiver-plane) slope bias.
 // The bias follows the facet's plane, which the map holds, not the smooth shading normal's: with the shading
 // normal's plane, the gradient vanished where the normal faces the map's depth axis while the facet's did not,
-// and specks of acne showed near the highlight (37 to 46 pixels under 0.99 in these four, factors down to 0.51).
+// and specks of acne showed near the highlight (25 to 46 pixels under 0.98 in these four, factors down to 0.51).
 TEST(ViewFollowing, ASphereFacingTheLightHasNoAcneOnWarpedMaps) {
   const scenes::Scene s = scenes::builtin_scene("tutorial");
   const glm::vec3 centre(2.2f, 1.2f, 0.8f), to_light = glm::normalize(glm::vec3(0.5f, 2.0f, 2.0f));
@@ -271,7 +271,7 @@ TEST(ViewFollowing, ASphereFacingTheLightHasNoAcneOnWarpedMaps) {
       if (!rec.covered[p] || std::abs(glm::length(rec.position[p] - centre) - 1.2f) > 0.02f) continue;
       if (glm::dot(rec.normal[p], to_light) < 0.2f || !rec.lit_facing[p * rec.lights]) continue;
       ++facing;
-      dark += rec.visibility[p * rec.lights] < 0.99f;
+      dark += rec.visibility[p * rec.lights] < 0.98f;
     }
     EXPECT_GT(facing, 8000u) << tech::to_string(technique) << " " << warp;  // the sphere is in view
     EXPECT_EQ(dark, 0u) << tech::to_string(technique) << " " << warp;

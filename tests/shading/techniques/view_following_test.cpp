@@ -92,6 +92,28 @@ TEST(ChooseSlice, BySplitDistanceWithABlendBand) {
   EXPECT_EQ(choose_slice(s, 0.25f, 7.9f).next_weight, 0.0f);  // the last slice blends into nothing
 }
 
+// The receivers' range is that of the frustum's part inside their box, not of the box's corners: a box beside
+// the camera (x from 5 to 6, 60° square frustum, half-width 0.577 d at distance d) meets the view from
+// d = 5 / tan 30° = 8.66 on, though its near corners lie at distance 0, before the camera's near plane. The
+// corners' range put a perspective warp's near plane at 0.1 and left the toy car's face maps almost no texels.
+TEST(ReceiverViewRange, IsTheFrustumsPartInsideTheBox) {
+  const CameraView cam = make_camera({0, 0, 0}, {0, 0, -1}, 60, 1.0f, 0.1f, 100);
+  const ViewRange beside = receiver_view_range(cam, Box{{5, -0.5f, -20}, {6, 0.5f, 0}});
+  const float enter = 5.0f / std::tan(glm::radians(30.0f));
+  EXPECT_NEAR(beside.near, enter, 0.02f * (20.0f - enter));  // within its 0.1 % pad and rounding
+  EXPECT_LE(beside.near, enter);
+  EXPECT_NEAR(beside.far, 20.0f, 0.02f);
+  EXPECT_GE(beside.far, 20.0f);
+  // A box around the camera starts at the near plane; one beyond the far plane ends there.
+  const ViewRange around = receiver_view_range(cam, Box{{-1, -1, -200}, {1, 1, 1}});
+  EXPECT_FLOAT_EQ(around.near, 0.1f);
+  EXPECT_FLOAT_EQ(around.far, 100.0f);
+  // A box outside the view keeps its corners' range (clamped to the camera's).
+  const ViewRange behind = receiver_view_range(cam, Box{{-1, -1, 5}, {1, 1, 9}});
+  EXPECT_FLOAT_EQ(behind.near, 0.1f);
+  EXPECT_GT(behind.far, behind.near);
+}
+
 TEST(ClipSliceToBox, BoundsHoldEveryPointOfTheIntersection) {
   Rng r(7);
   int checked = 0;
