@@ -88,9 +88,10 @@ inline float receiver_plane_bias(const SliceMap& s, const BiasParams& b, glm::ve
                           : b.slope_max;
 }
 
-// Where point p with unit normal n reads map s: false (lit, no lookup) when p lies behind a perspective map's
-// projection centre. Constant (and, on orthographic maps, slope) bias moves p towards the light by the bias
-// times the map's depth extent; slope on a perspective map is receiver_plane_bias.
+// Where the query's point p (unit shading normal n) reads map s: false (lit, no lookup) when p lies behind a
+// perspective map's projection centre. Constant (and, on orthographic maps, slope) bias moves p towards the
+// light by the bias times the map's depth extent; slope on a perspective map is receiver_plane_bias, on the
+// query's triangle plane (receiver_plane_normal).
 inline bool slice_context(const SliceMap& s, const SliceLight& l, const ShadowQuery& query, SampleContext& ctx) {
   const glm::vec3 p = query.p, n = query.n;
   const glm::vec2 frag = query.frag;
