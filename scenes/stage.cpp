@@ -24,6 +24,23 @@ glm::vec3 sun_direction(float az_deg, float el_deg) {
   return -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
 }
 
+namespace {
+
+// How far from the box's vertical axis (the larger of the x and z distances) its shadow on the plane under it
+// reaches, cast along `direction` (the way the light travels, downwards), its own footprint included.
+float shadow_reach(const Aabb& b, glm::vec3 direction) {
+  const glm::vec3 centre = b.center();
+  float reach = 0.0f;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 p((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+    const glm::vec3 on_ground = direction.y < 0.0f ? p + direction * ((p.y - b.min.y) / -direction.y) : p;
+    reach = std::max({reach, std::abs(on_ground.x - centre.x), std::abs(on_ground.z - centre.z)});
+  }
+  return std::isfinite(reach) ? reach : 0.0f;
+}
+
+}  // namespace
+
 StagedScene load_model_staged(const std::filesystem::path& path, const StageOptions& options) {
   SceneDesc desc;
   desc.name = path.stem().string();
@@ -53,6 +70,7 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
   const Aabb bounds = scene_bounds(probe);
   StagedScene out;
   const std::string file = path.filename().string();
+  float ground_side = 0.0f;  // the staged ground's side, when one is added
   // The camera the frame will use first: the file's, or one framing the model.
   glm::vec3 eye = bounds.empty() ? glm::vec3(0.0f, 0.0f, 1.0f) : frame_camera(bounds).position;
   if (!probe.cameras.empty()) eye = probe.cameras[0].position;
@@ -79,6 +97,10 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
       // plane that the camera then framed); a model with no footprint (all in one vertical line) has its height.
       float side = 3.0f * std::max(size.x, size.z);
       if (!(side > 0.0f)) side = 3.0f * size.y;
+      // Wider where the sun's shadow of the model's box reaches beyond that (a tall, narrow model such as the
+      // antique camera on its tripod: the head's shadow ran off the ground's corner), with a tenth to spare.
+      side = std::max(side, 2.2f * shadow_reach(bounds, sun.direction));
+      ground_side = side;
       ObjectDesc ground;
       ground.name = "ground";
       ground.source = Shape{PlaneShape{glm::vec2(side), 1}};
@@ -98,10 +120,12 @@ StagedScene load_model_staged(const std::filesystem::path& path, const StageOpti
   }
   if (probe.cameras.empty() && !bounds.empty()) {
     Camera c = frame_camera(bounds, "framed");
-    // Far enough for the ground around the model (up to about 2.2 model sizes from its centre).
+    // Far enough for the ground around the model (up to about 2.2 model sizes from its centre, or its corners
+    // where the sun's shadow made it wider: half its diagonal, 0.71 of its side).
     if (auto* p = std::get_if<Perspective>(&c.projection)) {
       const double radius = std::max(0.5 * glm::length(glm::dvec3(bounds.size())), 1e-12);  // as frame_camera
-      p->far = float(std::min(double(glm::length(glm::dvec3(c.position - c.target))) + 5.0 * radius,
+      const double reach = std::max(5.0 * radius, 0.75 * double(ground_side));
+      p->far = float(std::min(double(glm::length(glm::dvec3(c.position - c.target))) + reach,
                               double(std::numeric_limits<float>::max())));
     }
     desc.cameras.push_back(c);

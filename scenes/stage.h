@@ -15,7 +15,8 @@
 namespace scenes {
 
 struct StageOptions {
-  // A ground plane under a model that has no lights. It casts, as a floor is drawn into the maps: filtered maps
+  // A ground plane under a model that has no lights: three times its footprint, or wider where the sun's shadow of
+  // its box reaches farther (a tenth to spare). It casts, as a floor is drawn into the maps: filtered maps
   // (esm, vsm, evsm) need their receivers in the map, or every shadow erodes by the blur where the map holds
   // only the far plane (projective shadows want it otherwise: ground_receives_only).
   bool ground = true;

@@ -115,6 +115,34 @@ TEST(Stage, ZUpModelIsTurnedUpright) {
   EXPECT_NEAR(scenes::scene_bounds(s.scene).min.y, m.min.y, 1e-5f);  // the ground's top at the model's base
 }
 
+// The ground catches the sun's whole shadow of the model: the box stood up (4 m tall on a 1 × 2 m footprint)
+// under a sun 30° up casts its top 6.9 m away, beyond three times its footprint (a 6 m ground, as the antique
+// camera on its tripod had its head's shadow cut at the ground's corner); every corner of the model's box,
+// carried along the sun's direction down to the ground, lands on it, for suns all around.
+TEST(Stage, TheGroundHoldsTheModelsShadow) {
+  const auto dir = testsupport::temp_dir("stage_shadow");
+  const auto file = write_box(dir, "box", false);
+  for (const float az : {0.0f, 45.0f, 90.0f, 200.0f, 315.0f}) {
+    scenes::StageOptions o;
+    o.up = scenes::StageOptions::Up::z;
+    o.sun = glm::vec2(az, 30.0f);
+    const scenes::StagedScene s = scenes::load_model_staged(file, o);
+    ASSERT_EQ(s.scene.staged_ground, std::optional<uint32_t>(1));
+    const scenes::Aabb m = scenes::object_bounds(s.scene, 0), ground = scenes::object_bounds(s.scene, 1);
+    const glm::vec3 d = s.scene.lights.at(0).direction;
+    for (int i = 0; i < 8; ++i) {
+      const glm::vec3 p((i & 1) ? m.max.x : m.min.x, (i & 2) ? m.max.y : m.min.y, (i & 4) ? m.max.z : m.min.z);
+      const glm::vec3 q = p + d * ((p.y - m.min.y) / -d.y);
+      EXPECT_GE(q.x, ground.min.x) << az;
+      EXPECT_LE(q.x, ground.max.x) << az;
+      EXPECT_GE(q.z, ground.min.z) << az;
+      EXPECT_LE(q.z, ground.max.z) << az;
+    }
+    // No wider than it needs: a tenth to spare around the farthest point of the shadow.
+    EXPECT_LT(ground.max.x - ground.min.x, 2.2f * (4.0f / std::tan(glm::radians(30.0f)) + 1.2f)) << az;
+  }
+}
+
 // Every --up axis: the model's own up direction becomes +Y by a rotation (no mirror), the ground under it.
 TEST(Stage, EachUpAxisTurnsTheModelUpright) {
   const auto dir = testsupport::temp_dir("stage_up");
