@@ -103,11 +103,7 @@ FacePlan plan_face_maps(glm::vec3 direction, const CameraView& camera, ViewRange
     top = std::max(top, double(q.z));
   }
   if (!casters.empty())
-    for (int i = 0; i < 8; ++i) {
-      const glm::vec3 p((i & 1) ? casters.max.x : casters.min.x, (i & 2) ? casters.max.y : casters.min.y,
-                        (i & 4) ? casters.max.z : casters.min.z);
-      top = std::max(top, double((view * glm::vec4(p, 1.0f)).z));
-    }
+    for (const glm::vec3& p : box_corners(casters)) top = std::max(top, double((view * glm::vec4(p, 1.0f)).z));
   const double pad = std::max(top - z_low, 1e-3) * 0.005;
   top += pad, z_low -= pad;
   const double depth_far = top - z_low;

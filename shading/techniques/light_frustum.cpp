@@ -13,17 +13,6 @@
 namespace shading::tech {
 SHADOWLAB_ISA_BEGIN
 
-namespace {
-
-std::array<glm::vec3, 8> corners(const Box& b) {
-  std::array<glm::vec3, 8> c;
-  for (int i = 0; i < 8; ++i)
-    c[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
-  return c;
-}
-
-}  // namespace
-
 glm::vec3 light_up(glm::vec3 direction) {
   const glm::vec3 d = glm::normalize(direction);
   return std::abs(d.y) > 0.99f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
@@ -51,7 +40,7 @@ LightMatrices fit_directional(glm::vec3 direction, const Box& receivers, const B
   // Light view space looks down −z: larger z is nearer the light.
   glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
   if (!receivers.empty())
-    for (const glm::vec3& p : corners(receivers)) {
+    for (const glm::vec3& p : box_corners(receivers)) {
       const glm::vec3 v = glm::vec3(m.view * glm::vec4(p, 1.0f));
       lo = glm::min(lo, v);
       hi = glm::max(hi, v);
@@ -59,7 +48,7 @@ LightMatrices fit_directional(glm::vec3 direction, const Box& receivers, const B
   if (receivers.empty()) lo = glm::vec3(-1.0f), hi = glm::vec3(1.0f);
   float znear = hi.z;  // nearest the light
   if (!casters.empty())
-    for (const glm::vec3& p : corners(casters)) znear = std::max(znear, (m.view * glm::vec4(p, 1.0f)).z);
+    for (const glm::vec3& p : box_corners(casters)) znear = std::max(znear, (m.view * glm::vec4(p, 1.0f)).z);
   const glm::vec2 ext = glm::max(glm::vec2(hi - lo), glm::vec2(1e-3f)) * margin;
   const float zext = std::max(znear - lo.z, 1e-3f) * margin;
   m.proj = glm::ortho(lo.x - ext.x, hi.x + ext.x, lo.y - ext.y, hi.y + ext.y, -(znear + zext), -(lo.z - zext));

@@ -3,6 +3,7 @@
 // scene bounds, extended towards the light to every potential caster) or a fixed box as in the tutorial; spot
 // lights get a perspective frustum around their cone.
 #pragma once
+#include <array>
 #include <limits>
 #include <optional>
 #include <span>
@@ -20,6 +21,14 @@ struct Box {
   glm::vec3 max{-std::numeric_limits<float>::infinity()};
   bool empty() const { return !(min.x <= max.x && min.y <= max.y && min.z <= max.z); }
 };
+
+// The box's eight corners, corner i taking max on axis k where bit k of i is set (x: 1, y: 2, z: 4).
+inline std::array<glm::vec3, 8> box_corners(const Box& b) {
+  std::array<glm::vec3, 8> c;
+  for (int i = 0; i < 8; ++i)
+    c[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
+  return c;
+}
 
 // One scene object (an instance) as the tutorial's automatic frustum sees it: its world box and whether it casts
 // and receives shadows.

@@ -16,13 +16,6 @@ SHADOWLAB_ISA_BEGIN
 
 namespace {
 
-std::array<glm::vec3, 8> box_corners(const Box& b) {
-  std::array<glm::vec3, 8> c;
-  for (int i = 0; i < 8; ++i)
-    c[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
-  return c;
-}
-
 // Widens [lo, hi] about its centre so that it covers the inner `inner` of `size` texels exactly.
 void widen(float& lo, float& hi, int size, int ring) {
   const int inner = size - 2 * ring;

@@ -50,8 +50,7 @@ glm::mat3 light_rotation(glm::vec3 direction) {
 Box rotated_box(const glm::mat3& rotation, const Box& b) {
   Box r;
   if (b.empty()) return r;
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec3 p((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+  for (const glm::vec3& p : box_corners(b)) {
     const glm::vec3 q = rotation * p;
     r.min = glm::min(r.min, q);
     r.max = glm::max(r.max, q);

@@ -17,13 +17,6 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-std::array<glm::vec3, 8> box_corners(const Box& b) {
-  std::array<glm::vec3, 8> c;
-  for (int i = 0; i < 8; ++i)
-    c[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
-  return c;
-}
-
 // Light-space bounds of a point set.
 struct Bounds {
   glm::vec3 lo{kInf}, hi{-kInf};

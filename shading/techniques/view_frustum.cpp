@@ -22,10 +22,10 @@ ViewRange receiver_view_range(const CameraView& c, const Box& receivers) {
   // The view distances of the part of the frustum inside the box; the box's own corners where the two do not
   // meet (nothing the camera sees receives, and the range only has to be valid).
   std::vector<glm::vec3> points = clip_slice_to_box(slice_corners(c, c.near, c.far), receivers);
-  if (points.empty())
-    for (int i = 0; i < 8; ++i)
-      points.emplace_back((i & 1) ? receivers.max.x : receivers.min.x, (i & 2) ? receivers.max.y : receivers.min.y,
-                          (i & 4) ? receivers.max.z : receivers.min.z);
+  if (points.empty()) {
+    const auto corners = box_corners(receivers);
+    points.assign(corners.begin(), corners.end());
+  }
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
   for (const glm::vec3& p : points) {
     const float d = view_distance(c, p);
@@ -127,9 +127,7 @@ std::vector<glm::vec3> clip_slice_to_box(const std::array<glm::vec3, 8>& c, cons
   };
   for (const glm::vec3& p : c)
     if (in_box(p)) out.push_back(p);
-  std::array<glm::vec3, 8> bc;
-  for (int i = 0; i < 8; ++i)
-    bc[size_t(i)] = {(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, (i & 4) ? box.max.z : box.min.z};
+  const std::array<glm::vec3, 8> bc = box_corners(box);
   for (const glm::vec3& p : bc)
     if (in_slice(p)) out.push_back(p);
   // Slice edges across the box's faces.

@@ -79,6 +79,20 @@ void change_one_pixel(const fs::path& png, int x, int y) {
   ASSERT_TRUE(img.write(png.string()));
 }
 
+// Runs `eval` on the shared asset `model` with `args` (output in DIR/ev) and expects `rows` results, each under
+// `limit` per cent false-lit and false-shadowed.
+void expect_eval_close(const fs::path& dir, const std::string& model, const std::string& args, size_t rows,
+                       double limit) {
+  const Outcome er = shadowlab(dir, "eval '" + (testsupport::assets_dir() / model).string() + "' " + args + " --out ev");
+  ASSERT_EQ(er.code, 0) << er.err;
+  const nlohmann::json ev = nlohmann::json::parse(testsupport::slurp(dir / "ev" / "eval.json"));
+  ASSERT_EQ(ev.at("results").size(), rows);
+  for (const nlohmann::json& row : ev.at("results")) {
+    EXPECT_LT(row.at("false_lit_pct").get<double>(), limit) << model << " " << row.at("technique");
+    EXPECT_LT(row.at("false_shadowed_pct").get<double>(), limit) << model << " " << row.at("technique");
+  }
+}
+
 class CliScripting : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -378,15 +392,7 @@ TEST_F(CliScripting, BareGltfModelGetsASunAGroundAndAShadow) {
     EXPECT_THAT(err, ::testing::Not(::testing::HasSubstr("warning"))) << t;
   }
   // eval scores each on the scene it renders: the shadow found, against the same reference.
-  const Outcome er = shadowlab(dir, "eval '" + (testsupport::assets_dir() / "fox/Fox.gltf").string() +
-                                        "' --techniques shadowmap,esm,projective --size 160x90 --out ev");
-  ASSERT_EQ(er.code, 0) << er.err;
-  const nlohmann::json ev = nlohmann::json::parse(testsupport::slurp(dir / "ev" / "eval.json"));
-  ASSERT_EQ(ev.at("results").size(), 3u);
-  for (const nlohmann::json& row : ev.at("results")) {
-    EXPECT_LT(row.at("false_lit_pct").get<double>(), 2.0) << row.at("technique");
-    EXPECT_LT(row.at("false_shadowed_pct").get<double>(), 2.0) << row.at("technique");
-  }
+  expect_eval_close(dir, "fox/Fox.gltf", "--techniques shadowmap,esm,projective --size 160x90", 3, 2.0);
 }
 
 // The view-following techniques on a staged model, against the exact shadow: a small model under an orbit
@@ -395,15 +401,7 @@ TEST_F(CliScripting, BareGltfModelGetsASunAGroundAndAShadow) {
 // 3.65 % false-lit at this size as at 640 x 360 (0.20 % now), striped light on its shadowed side.
 TEST_F(CliScripting, ViewFollowingMapsOnAStagedModelStayCloseToTheExactShadow) {
   if (!testsupport::have_assets()) GTEST_SKIP() << "skipped: ../shared/assets not found";
-  const Outcome er = shadowlab(dir, "eval '" + (testsupport::assets_dir() / "toy_car/ToyCar.gltf").string() +
-                                        "' --techniques cascades,lispsm,frustum-faces --size 320x180 --out ev");
-  ASSERT_EQ(er.code, 0) << er.err;
-  const nlohmann::json ev = nlohmann::json::parse(testsupport::slurp(dir / "ev" / "eval.json"));
-  ASSERT_EQ(ev.at("results").size(), 3u);
-  for (const nlohmann::json& row : ev.at("results")) {
-    EXPECT_LT(row.at("false_lit_pct").get<double>(), 1.0) << row.at("technique");
-    EXPECT_LT(row.at("false_shadowed_pct").get<double>(), 1.0) << row.at("technique");
-  }
+  expect_eval_close(dir, "toy_car/ToyCar.gltf", "--techniques cascades,lispsm,frustum-faces --size 320x180", 3, 1.0);
 }
 
 // --light NAME|INDEX renders one light alone: the same frame as a scene file holding only that light, by name or

@@ -182,6 +182,20 @@ TEST(ViewFollowing, ExportedMapsCarryEveryPass) {
 
 namespace {
 
+// The techniques whose maps are warped (perspective), each with the warp it is asked for: LiSPSM, cascades
+// warped by LiSPSM, and the face maps with either projection centre.
+const std::pair<tech::Technique, const char*> kWarpedMaps[] = {{tech::Technique::lispsm, ""},
+                                                               {tech::Technique::cascades, "lispsm"},
+                                                               {tech::Technique::frustum_faces, "exact"},
+                                                               {tech::Technique::frustum_faces, "lispsm"}};
+
+void use_warped_map(frame::FrameConfig& o, tech::Technique technique, const char* warp) {
+  o.technique = technique;
+  o.params.clear();
+  if (technique == tech::Technique::cascades) o.params["cascade_warp"] = std::string(warp);
+  if (technique == tech::Technique::frustum_faces) o.params["face_warp"] = std::string(warp);
+}
+
 // A lone ground plane, lit obliquely and seen from just above it, casts no shadow on itself: every pixel
 // renders as with no shadows at all, on each warped map with its default (receiver-plane) slope bias. With no
 // bias the same frames show acne, so the check can fail.
@@ -218,25 +232,14 @@ TEST(ViewFollowing, ALonePlaneHasNoAcneOnWarpedMaps) {
       n += std::memcmp(f.color.row8(y), unshadowed.color.row8(y), size_t(f.color.width()) * 4) != 0;
     return n;
   };
-  const std::pair<tech::Technique, const char*> cases[] = {{tech::Technique::lispsm, ""},
-                                                           {tech::Technique::cascades, "lispsm"},
-                                                           {tech::Technique::frustum_faces, "exact"},
-                                                           {tech::Technique::frustum_faces, "lispsm"}};
-  for (const auto& [technique, warp] : cases) {
-    o.technique = technique;
-    o.params.clear();
-    if (technique == tech::Technique::cascades) o.params["cascade_warp"] = std::string(warp);
-    if (technique == tech::Technique::frustum_faces) o.params["face_warp"] = std::string(warp);
+  for (const auto& [technique, warp] : kWarpedMaps) {
+    use_warped_map(o, technique, warp);
     o.bias = tech::BiasMode::slope;
     EXPECT_EQ(differing(frame::render_frame(s, o, r)), 0u) << tech::to_string(technique) << " " << warp;
     o.bias = tech::BiasMode::none;
     EXPECT_GT(differing(frame::render_frame(s, o, r)), 0u) << tech::to_string(technique) << " " << warp << ", no bias";
   }
 }
-
-}  // namespace
-
-namespace {
 
 // The tutorial's sphere (48 × 24 facets) cannot shadow its own lit side: where its facet faces the light, every
 // pixel on it reads lit on the warped maps (a factor of at least 0.98: a texel at the far corner of a bilinear
@@ -253,15 +256,8 @@ TEST(ViewFollowing, ASphereFacingTheLightHasNoAcneOnWarpedMaps) {
   o.width = 1280;
   o.height = 720;
   o.surface_record = true;
-  const std::pair<tech::Technique, const char*> cases[] = {{tech::Technique::lispsm, ""},
-                                                           {tech::Technique::cascades, "lispsm"},
-                                                           {tech::Technique::frustum_faces, "exact"},
-                                                           {tech::Technique::frustum_faces, "lispsm"}};
-  for (const auto& [technique, warp] : cases) {
-    o.technique = technique;
-    o.params.clear();
-    if (technique == tech::Technique::cascades) o.params["cascade_warp"] = std::string(warp);
-    if (technique == tech::Technique::frustum_faces) o.params["face_warp"] = std::string(warp);
+  for (const auto& [technique, warp] : kWarpedMaps) {
+    use_warped_map(o, technique, warp);
     const frame::Frame f = frame::render_frame(s, o, r);
     ASSERT_TRUE(f.surface.has_value());
     const frame::SurfaceRecord& rec = *f.surface;
